@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: MIT
+#include "cli.hpp"
+
+#include <exception>
+#include <ostream>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+#include "sim/config_error.hpp"
+
+namespace swarmpath::app {
+
+int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  CLI::App app{
+      "swarmpath: a fast, deterministic swarm simulator for dynamic subgoal-based path formation and task "
+      "allocation (Ratnabala, Peter, Charles), and the tools to tune its controllers.",
+      "swarmpath"};
+  app.require_subcommand(1);
+  app.fallthrough(false);
+
+  struct Entry {
+    CLI::App* cmd;
+    Runner run;
+  };
+
+  std::vector<Entry> commands;
+  {
+    CLI::App* c = app.add_subcommand("simulate", "Run one simulation and summarise it (text, JSON, SVG).");
+    commands.push_back({c, add_simulate(*c)});
+  }
+  {
+    CLI::App* c = app.add_subcommand("astar", "A* baseline path lengths of a scenario (SPEC 4.5).");
+    commands.push_back({c, add_astar(*c)});
+  }
+
+  // CLI11 wants argv order with the program name first and parses from the back
+  std::vector<std::string> reversed(args.rbegin(), args.rend());
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    out << app.help();  // delegates to the subcommand given --help
+    return kExitOk;
+  } catch (const CLI::CallForAllHelp&) {
+    out << app.help("", CLI::AppFormatMode::All);
+    return kExitOk;
+  } catch (const CLI::ParseError& e) {
+    err << "error: " << e.what() << "\n";
+    if (args.empty())
+      err << app.help();
+    else
+      err << "Run 'swarmpath --help' or 'swarmpath <command> --help' for usage.\n";
+    return kExitBadInput;
+  }
+
+  for (const Entry& c : commands) {
+    if (!c.cmd->parsed()) continue;
+    try {
+      return c.run(out, err);
+    } catch (const sim::ConfigError& e) {
+      err << "error: " << e.what() << "\n";
+      return kExitBadInput;
+    } catch (const std::exception& e) {
+      err << "error: " << e.what() << "\n";
+      return kExitFailure;
+    }
+  }
+  return kExitBadInput;
+}
+
+}  // namespace swarmpath::app

@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: MIT
+// swarmpath simulate: one run, summarised as text or JSON, optionally drawn as SVG.
+#include <memory>
+#include <ostream>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include "cli.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+#include "sim/astar.hpp"
+#include "sim/config_error.hpp"
+#include "sim/hash.hpp"
+#include "sim/step.hpp"
+#include "svg.hpp"
+
+namespace swarmpath::app {
+
+namespace {
+
+struct SimulateOptions {
+  std::string scenario;
+  std::string params;
+  std::optional<std::int64_t> robots;
+  std::uint64_t seed = 1;
+  std::optional<std::int64_t> ticks;
+  std::string mode = "diffusion";
+  std::string svg;
+  bool trails = false;
+  bool json = false;
+};
+
+int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err) {
+  const sim::Scenario s = scenario_with_overrides(o.scenario, o.robots, o.ticks);
+  const sim::Params p = params_or_defaults(o.params);
+  const sim::Mode mode = mode_from_option(o.mode);
+
+  // trails: one sample per robot every `every` ticks, at most ~1500 samples per robot
+  const std::int64_t every = std::max<std::int64_t>(1, s.sim.max_ticks / 1500);
+  std::vector<std::vector<sim::Vec2>> trails;
+  const bool progress = stderr_is_terminal();
+  const Stopwatch clock;
+  double next_report = 1.0;
+  const sim::TickObserver observe = [&](const sim::World& w) {
+    if (o.trails && w.tick % every == 0) {
+      trails.resize(w.poses.size());
+      for (std::size_t i = 0; i < w.poses.size(); ++i) trails[i].push_back(w.poses[i].p);
+    }
+    if (progress && w.tick % 256 == 0 && clock.seconds() > next_report) {
+      next_report = clock.seconds() + 0.5;
+      err << "\r  tick " << w.tick << " / " << s.sim.max_ticks << " (" << (100 * w.tick / s.sim.max_ticks)
+          << " %)" << std::flush;
+    }
+    return false;
+  };
+  sim::World world;
+  const sim::Metrics m = sim::run(p, s, mode, o.seed, observe, &world);
+  const double seconds = clock.seconds();
+  if (progress && seconds > 1.0) err << "\r" << std::string(40, ' ') << "\r";
+
+  // A* baseline for the picture and the summary (skipped for arenas too large for its grid)
+  std::optional<sim::AStarResult> a8;
+  try {
+    a8 = sim::astar(s, {sim::Connectivity::kEight});
+  } catch (const sim::ConfigError& e) {
+    err << "note: no A* baseline: " << e.what() << "\n";
+  }
+  const double robot_ticks_per_s =
+      seconds > 0 ? static_cast<double>(m.robots) * static_cast<double>(m.ticks) / seconds : 0.0;
+
+  if (!o.svg.empty()) {
+    Picture pic;
+    pic.scenario = &s;
+    pic.world = &world;
+    pic.trails = std::move(trails);
+    pic.caption.push_back(std::to_string(m.robots) + " robots, seed " + std::to_string(o.seed) + ", mode " +
+                          std::string(sim::to_string(mode)) + ", tick " + std::to_string(m.ticks) +
+                          ", state_hash " + sim::to_hex(m.state_hash));
+    if (a8 && a8->found) {
+      pic.lines.push_back({a8->path, "#e00000", 2.0,
+                           "A* (8-connected): " + fixed(sim::to_tu(a8->length_m), 1) + " TU", false});
+    }
+    write_svg_file(o.svg, pic);
+  }
+
+  if (o.json) {
+    nlohmann::ordered_json j;
+    j["scenario"] = s.name;
+    j["scenario_file"] = s.file;
+    j["env_class"] = std::string(sim::to_string(s.env_class));
+    j["mode"] = std::string(sim::to_string(mode));
+    j["robots"] = m.robots;
+    j["seed"] = o.seed;
+    j["ticks"] = m.ticks;
+    j["max_ticks"] = s.sim.max_ticks;
+    j["state_hash"] = sim::to_hex(m.state_hash);
+    j["distance_m"] = m.distance_m;
+    j["mean_speed_cm_s"] = m.mean_speed_cm_s;
+    if (a8 && a8->found)
+      j["astar8_tu"] = sim::to_tu(a8->length_m);
+    else
+      j["astar8_tu"] = nullptr;
+    j["table_unit_cm"] = 10;
+    j["wall_seconds"] = seconds;
+    j["robot_ticks_per_second"] = robot_ticks_per_s;
+    if (!o.svg.empty()) j["svg"] = o.svg;
+    out << j.dump(2) << "\n";
+    return kExitOk;
+  }
+  out << "swarmpath simulate: " << s.name << " (" << sim::to_string(s.env_class) << "), " << m.robots
+      << " robots, seed " << o.seed << ", mode " << sim::to_string(mode) << "\n";
+  out << "  ticks         " << m.ticks << " (" << fixed(static_cast<double>(m.ticks) * s.sim.dt(), 1)
+      << " s simulated)\n";
+  out << "  state_hash    " << sim::to_hex(m.state_hash) << "\n";
+  out << "  mean speed    " << fixed(m.mean_speed_cm_s, 2) << " cm/s\n";
+  if (a8 && a8->found) out << "  A*-8          " << fixed(sim::to_tu(a8->length_m), 1) << " TU\n";
+  out << "  wall time     " << fixed(seconds, 3) << " s (" << fixed(robot_ticks_per_s / 1e6, 2)
+      << " M robot-ticks/s)\n";
+  if (!o.svg.empty()) out << "  picture       " << o.svg << "\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+Runner add_simulate(CLI::App& app) {
+  auto o = std::make_shared<SimulateOptions>();
+  app.add_option("--scenario", o->scenario, "Scenario file (TOML), e.g. configs/scenarios/paper/env4.toml")
+      ->required();
+  app.add_option("--params", o->params, "Params file (TOML, SPEC 7 names); default: the paper's defaults");
+  app.add_option("--robots", o->robots, "Number of robots (default: the scenario's deployment.robots)");
+  app.add_option("--seed", o->seed, "Random seed: deployment and every robot's stream derive from it")
+      ->capture_default_str();
+  app.add_option("--ticks", o->ticks,
+                 "Ticks to simulate (default: the scenario's max_ticks; 10 ticks = 1 s)");
+  app.add_option("--mode", o->mode, "Controller: diffusion (random walk with obstacle avoidance)")
+      ->capture_default_str();
+  app.add_option("--svg", o->svg,
+                 "Write a picture of the final state (arena, robots by LED colour, A* in red)");
+  app.add_flag("--trails", o->trails, "Draw every robot's trail in the SVG");
+  app.add_flag("--json", o->json, "Print one JSON object instead of the text summary");
+  return [o](std::ostream& out, std::ostream& err) { return run_simulate(*o, out, err); };
+}
+
+}  // namespace swarmpath::app

@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: MIT
+// The subcommands. Each one registers its options on a CLI11 subcommand and returns a runner
+// that the dispatcher calls once parsing succeeded.
+#pragma once
+
+#include <functional>
+#include <iosfwd>
+
+namespace CLI {
+class App;
+}
+
+namespace swarmpath::app {
+
+using Runner = std::function<int(std::ostream& out, std::ostream& err)>;
+
+Runner add_simulate(CLI::App& app);
+Runner add_astar(CLI::App& app);
+
+}  // namespace swarmpath::app

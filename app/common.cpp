@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+#include "common.hpp"
+
+#include <iomanip>
+#include <sstream>
+#include <unistd.h>
+
+#include "sim/config_error.hpp"
+
+namespace swarmpath::app {
+
+sim::Params params_or_defaults(const std::string& path) {
+  if (path.empty()) return sim::Params{};
+  return sim::load_params(path);
+}
+
+sim::Mode mode_from_option(const std::string& text) {
+  if (const auto m = sim::parse_mode(text)) return *m;
+  throw sim::ConfigError("--mode", 0, "", "unknown mode \"" + text + "\" (choices: diffusion)");
+}
+
+sim::Scenario scenario_with_overrides(const std::string& path, std::optional<std::int64_t> robots,
+                                      std::optional<std::int64_t> ticks) {
+  sim::Scenario s = sim::load_scenario(path);
+  if (robots) s = sim::with_robots(s, *robots);
+  if (ticks) s = sim::with_max_ticks(s, *ticks);
+  return s;
+}
+
+std::string fixed(double v, int digits) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(digits) << v;
+  return o.str();
+}
+
+bool stderr_is_terminal() { return isatty(STDERR_FILENO) != 0; }
+
+}  // namespace swarmpath::app

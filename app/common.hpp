@@ -1,0 +1,43 @@
+// SPDX-License-Identifier: MIT
+// Small helpers shared by the subcommands.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "sim/controller.hpp"
+#include "sim/params.hpp"
+#include "sim/scenario.hpp"
+
+namespace swarmpath::app {
+
+/// The params file, or the paper's defaults (SPEC §7) when `path` is empty.
+sim::Params params_or_defaults(const std::string& path);
+
+/// Parses --mode; throws ConfigError listing the choices.
+sim::Mode mode_from_option(const std::string& text);
+
+/// A scenario with the command line's overrides (robots, ticks) applied and checked.
+sim::Scenario scenario_with_overrides(const std::string& path, std::optional<std::int64_t> robots,
+                                      std::optional<std::int64_t> ticks);
+
+/// Fixed-point text with `digits` decimals.
+std::string fixed(double v, int digits);
+
+/// True when standard error is a terminal (progress lines are shown only then).
+bool stderr_is_terminal();
+
+/// Wall-clock stopwatch for reporting (never used inside the simulator).
+class Stopwatch {
+ public:
+  double seconds() const {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+  }
+
+ private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+};
+
+}  // namespace swarmpath::app

@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: MIT
+#include "svg.hpp"
+
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+#include <stdexcept>
+
+#include "sim/robot_model.hpp"
+
+namespace swarmpath::app {
+
+namespace {
+
+using sim::Vec2;
+
+std::string hex(sim::Led c) {
+  const sim::Rgb rgb = sim::rgb(c);
+  std::ostringstream o;
+  o << '#' << std::hex << std::setfill('0') << std::setw(2) << int{rgb.r} << std::setw(2) << int{rgb.g}
+    << std::setw(2) << int{rgb.b};
+  return o.str();
+}
+
+std::string escape(const std::string& s) {
+  std::string out;
+  for (const char ch : s) {
+    switch (ch) {
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;
+      default:
+        out += ch;
+    }
+  }
+  return out;
+}
+
+struct Frame {
+  sim::Aabb arena;
+  double k;    // px per metre
+  double top;  // px above the arena for the title
+
+  double x(double wx) const { return (wx - arena.lo.x) * k; }
+
+  double y(double wy) const { return top + (arena.hi.y - wy) * k; }
+};
+
+}  // namespace
+
+void write_svg(std::ostream& out, const Picture& pic) {
+  const sim::Scenario& s = *pic.scenario;
+  const double header = 22.0 + 16.0 * static_cast<double>(pic.caption.size());
+  const Frame f{s.arena_bounds(), pic.px_per_m, header};
+  const double width = s.arena_size.x * f.k;
+  const double height = header + s.arena_size.y * f.k + 8.0 + 16.0 * static_cast<double>(pic.lines.size());
+  out << std::fixed << std::setprecision(2);
+  out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+      << "\" viewBox=\"0 0 " << width << ' ' << height << "\" font-family=\"sans-serif\">\n";
+  out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+  // title and caption
+  out << "<text x=\"6\" y=\"17\" font-size=\"15\" font-weight=\"bold\">" << escape(s.name) << " ("
+      << sim::to_string(s.env_class) << ")</text>\n";
+  for (std::size_t i = 0; i < pic.caption.size(); ++i) {
+    out << "<text x=\"6\" y=\"" << 17.0 + 16.0 * static_cast<double>(i + 1) << "\" font-size=\"12\">"
+        << escape(pic.caption[i]) << "</text>\n";
+  }
+  // arena floor and a 1 m grid
+  out << "<rect x=\"0\" y=\"" << f.top << "\" width=\"" << width << "\" height=\"" << s.arena_size.y * f.k
+      << "\" fill=\"#f7f7f2\" stroke=\"#999\"/>\n<g stroke=\"#e4e4dc\" stroke-width=\"1\">\n";
+  for (double gx = std::ceil(f.arena.lo.x); gx <= f.arena.hi.x; gx += 1.0) {
+    out << "<line x1=\"" << f.x(gx) << "\" y1=\"" << f.y(f.arena.lo.y) << "\" x2=\"" << f.x(gx) << "\" y2=\""
+        << f.y(f.arena.hi.y) << "\"/>\n";
+  }
+  for (double gy = std::ceil(f.arena.lo.y); gy <= f.arena.hi.y; gy += 1.0) {
+    out << "<line x1=\"" << f.x(f.arena.lo.x) << "\" y1=\"" << f.y(gy) << "\" x2=\"" << f.x(f.arena.hi.x)
+        << "\" y2=\"" << f.y(gy) << "\"/>\n";
+  }
+  out << "</g>\n";
+  // deployment region
+  const sim::Aabb dep = s.deployment.bounds();
+  out << "<rect x=\"" << f.x(dep.lo.x) << "\" y=\"" << f.y(dep.hi.y) << "\" width=\""
+      << s.deployment.size.x * f.k << "\" height=\"" << s.deployment.size.y * f.k
+      << "\" fill=\"none\" stroke=\"#7a9cc6\" stroke-dasharray=\"6,4\"/>\n";
+  // obstacles and walls
+  out << "<g fill=\"#555\" stroke=\"#333\">\n";
+  for (const sim::Shape& sh : sim::obstacle_shapes(s)) {
+    if (sh.kind == sim::ShapeKind::kCircle) {
+      out << "<circle cx=\"" << f.x(sh.center.x) << "\" cy=\"" << f.y(sh.center.y) << "\" r=\""
+          << sh.radius * f.k << "\"/>\n";
+      continue;
+    }
+    out << "<polygon points=\"";
+    const Vec2 corners[4] = {
+        {-sh.half.x, -sh.half.y}, {sh.half.x, -sh.half.y}, {sh.half.x, sh.half.y}, {-sh.half.x, sh.half.y}};
+    for (const Vec2& c : corners) {
+      const Vec2 w = sh.center + sim::rotate(c, sh.c, sh.s);
+      out << f.x(w.x) << ',' << f.y(w.y) << ' ';
+    }
+    out << "\"/>\n";
+  }
+  out << "</g>\n";
+  // trails
+  if (!pic.trails.empty()) {
+    out << "<g fill=\"none\" stroke=\"#b9b9b9\" stroke-width=\"0.8\">\n";
+    for (const auto& t : pic.trails) {
+      if (t.size() < 2) continue;
+      out << "<polyline points=\"";
+      for (const Vec2& p : t) out << f.x(p.x) << ',' << f.y(p.y) << ' ';
+      out << "\"/>\n";
+    }
+    out << "</g>\n";
+  }
+  // nest (blue) with its reach circle, goal (yellow)
+  out << "<circle cx=\"" << f.x(s.nest.x) << "\" cy=\"" << f.y(s.nest.y) << "\" r=\"" << 1.0 * f.k
+      << "\" fill=\"none\" stroke=\"#0000ff\" stroke-opacity=\"0.35\" stroke-dasharray=\"3,3\"/>\n";
+  out << "<circle cx=\"" << f.x(s.nest.x) << "\" cy=\"" << f.y(s.nest.y) << "\" r=\"" << 0.15 * f.k
+      << "\" fill=\"#0000ff\" stroke=\"black\"/>\n";
+  out << "<circle cx=\"" << f.x(s.goal.x) << "\" cy=\"" << f.y(s.goal.y) << "\" r=\"" << 0.15 * f.k
+      << "\" fill=\"#ffff00\" stroke=\"black\"/>\n";
+  // paths
+  for (const Polyline& line : pic.lines) {
+    if (line.points.size() < 2) continue;
+    out << "<polyline fill=\"none\" stroke=\"" << line.color << "\" stroke-width=\"" << line.width_px
+        << "\" stroke-linejoin=\"round\" points=\"";
+    for (const Vec2& p : line.points) out << f.x(p.x) << ',' << f.y(p.y) << ' ';
+    out << "\"/>\n";
+    if (line.dots) {
+      for (const Vec2& p : line.points) {
+        out << "<circle cx=\"" << f.x(p.x) << "\" cy=\"" << f.y(p.y) << "\" r=\"" << 1.5 * line.width_px
+            << "\" fill=\"" << line.color << "\"/>\n";
+      }
+    }
+  }
+  // robots: body filled with the LED colour, a tick for the heading
+  if (pic.world != nullptr) {
+    const double r = sim::kRobotRadius * f.k;
+    out << "<g stroke-width=\"1\">\n";
+    for (std::size_t i = 0; i < pic.world->poses.size(); ++i) {
+      const sim::Pose& p = pic.world->poses[i];
+      const sim::Led led = pic.world->leds[i];
+      const std::string fill = led == sim::Led::kBlack ? "#2b2b2b" : hex(led);
+      out << "<circle cx=\"" << f.x(p.p.x) << "\" cy=\"" << f.y(p.p.y) << "\" r=\"" << r << "\" fill=\""
+          << fill << "\" stroke=\"black\"/>";
+      const Vec2 tip = p.p + sim::kRobotRadius * Vec2{p.c, p.s};
+      out << "<line x1=\"" << f.x(p.p.x) << "\" y1=\"" << f.y(p.p.y) << "\" x2=\"" << f.x(tip.x) << "\" y2=\""
+          << f.y(tip.y) << "\" stroke=\"black\"/>\n";
+    }
+    out << "</g>\n";
+  }
+  // legend of the paths
+  double ly = f.top + s.arena_size.y * f.k + 18.0;
+  for (const Polyline& line : pic.lines) {
+    if (line.label.empty()) continue;
+    out << "<line x1=\"8\" y1=\"" << ly - 4 << "\" x2=\"36\" y2=\"" << ly - 4 << "\" stroke=\"" << line.color
+        << "\" stroke-width=\"3\"/><text x=\"42\" y=\"" << ly << "\" font-size=\"12\">" << escape(line.label)
+        << "</text>\n";
+    ly += 16.0;
+  }
+  out << "</svg>\n";
+}
+
+void write_svg_file(const std::string& path, const Picture& pic) {
+  std::ofstream out(path);
+  if (!out) throw std::runtime_error("cannot write " + path);
+  write_svg(out, pic);
+  if (!out) throw std::runtime_error("error writing " + path);
+}
+
+}  // namespace swarmpath::app

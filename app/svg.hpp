@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// SVG pictures of an arena and a run: obstacles, nest and goal, robots coloured by LED,
+// the A* path in red, optional trails.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "sim/scenario.hpp"
+#include "sim/world.hpp"
+
+namespace swarmpath::app {
+
+struct Polyline {
+  std::vector<sim::Vec2> points;
+  std::string color;  ///< SVG colour
+  double width_px = 2.0;
+  std::string label;  ///< legend text; empty = no legend entry
+  bool dots = false;  ///< mark the vertices
+};
+
+struct Picture {
+  const sim::Scenario* scenario = nullptr;
+  const sim::World* world = nullptr;           ///< robots to draw (optional)
+  std::vector<Polyline> lines;                 ///< drawn in order, over the arena
+  std::vector<std::vector<sim::Vec2>> trails;  ///< per-robot trails (thin, grey)
+  std::vector<std::string> caption;            ///< lines of text under the title
+  double px_per_m = 50.0;
+};
+
+void write_svg(std::ostream& out, const Picture& pic);
+
+/// Writes to `path`; throws std::runtime_error when the file cannot be written.
+void write_svg_file(const std::string& path, const Picture& pic);
+
+}  // namespace swarmpath::app

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT
+// Simulator throughput: robot-ticks per second of the diffusion controller in env4, and the cost
+// per robot-tick as the swarm grows from 100 to 10,000 robots at constant density.
+//
+//   build/release/bench/sim_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//
+// items_per_second is robot-ticks per second; ns_per_robot_tick is its inverse.
+#include <benchmark/benchmark.h>
+
+#include "bench_scenarios.hpp"
+#include "sim/step.hpp"
+
+namespace swarmpath::bench {
+namespace {
+
+constexpr int kWarmupTicks = 300;
+
+void run_ticks(benchmark::State& state, const sim::Scenario& s) {
+  const sim::Params p;
+  sim::World w = sim::make_world(s, p, sim::Mode::kDiffusion, 1);
+  sim::MetricsAccumulator m;
+  m.begin(w.robot_count());
+  for (int t = 0; t < kWarmupTicks; ++t) sim::step(s, p, w, m);  // leave the start-up transient
+  for (auto _ : state) sim::step(s, p, w, m);
+  const double robot_ticks = static_cast<double>(state.iterations()) * w.robot_count();
+  state.SetItemsProcessed(static_cast<std::int64_t>(robot_ticks));
+  state.counters["robots"] = w.robot_count();
+  state.counters["ns_per_robot_tick"] =
+      benchmark::Counter(robot_ticks * 1e-9, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// env4 as the paper runs it: 100 robots starting in the 3 m square around the nest
+void BM_Env4Nest(benchmark::State& state) {
+  run_ticks(state, sim::with_robots(env4(), state.range(0), "bench"));
+}
+
+BENCHMARK(BM_Env4Nest)->Arg(100)->Iterations(3000)->Unit(benchmark::kMicrosecond);
+
+// env4 with the robots spread over the whole arena (1,000 do not fit in the nest square)
+void BM_Env4Spread(benchmark::State& state) {
+  run_ticks(state, env4_spread(static_cast<int>(state.range(0))));
+}
+
+BENCHMARK(BM_Env4Spread)->Arg(100)->Arg(1000)->Iterations(2000)->Unit(benchmark::kMicrosecond);
+
+// k x k tiles of env4, 100 robots per tile: constant density, 100 -> 10,000 robots
+void BM_Env4Tiled(benchmark::State& state) { run_ticks(state, env4_tiled(static_cast<int>(state.range(0)))); }
+
+BENCHMARK(BM_Env4Tiled)->Arg(1)->Arg(3)->Arg(10)->Iterations(400)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace swarmpath::bench
+
+BENCHMARK_MAIN();

@@ -1,0 +1,38 @@
+// SPDX-License-Identifier: MIT
+// The A* baseline of SPEC §4.5: occupancy grid at 1 cm, cells blocked within 8.5 cm of an
+// obstacle or wall, 8-connected without corner cutting (or 4-connected), octile heuristic,
+// start and goal in the cells holding the nest and goal centres, raw grid path length.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "scenario.hpp"
+#include "vec2.hpp"
+
+namespace swarmpath::sim {
+
+enum class Connectivity : std::uint8_t { kFour, kEight };
+
+struct AStarOptions {
+  Connectivity connectivity = Connectivity::kEight;
+  double resolution = 0.01;  ///< grid cell side [m] (SPEC §4.5: 1 cm)
+  double inflation = 0.085;  ///< block cells whose centre is within this of an obstacle [m]
+};
+
+struct AStarResult {
+  bool found = false;
+  double length_m = 0.0;      ///< raw grid path length [m]
+  std::vector<Vec2> path;     ///< cell centres at the path's corners, nest to goal [m]
+  std::int64_t expanded = 0;  ///< nodes taken off the open list
+};
+
+/// Cells of the grid; refuses grids above this many cells (ConfigError) rather than exhaust memory.
+inline constexpr std::int64_t kMaxAStarCells = 60'000'000;
+
+AStarResult astar(const Scenario& s, const AStarOptions& options = {});
+
+/// Table units of the paper's length column: 1 TU = 10 cm (SPEC §3.2, dm-scale).
+constexpr double to_tu(double metres) { return metres * 10.0; }
+
+}  // namespace swarmpath::sim

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// The controllers a world can run, their per-robot memory and the dispatch the step uses.
+// Controllers see a Percept and return a Command; they never see Box2D or the World.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "drive.hpp"
+#include "motion.hpp"
+#include "params.hpp"
+#include "percept.hpp"
+#include "rng.hpp"
+
+namespace swarmpath::sim {
+
+/// Which controller every robot runs.
+enum class Mode : std::uint8_t {
+  kDiffusion,  ///< random walk with proximity obstacle avoidance (ARGoS diffusion example)
+};
+
+std::string_view to_string(Mode m);
+std::optional<Mode> parse_mode(std::string_view s);
+
+/// Per-robot controller memory: everything a controller keeps between ticks.
+struct RobotMemory {
+  Rng rng;                          ///< this robot's own stream: splitmix64(seed ^ id)
+  TurnMode turn = TurnMode::kNone;  ///< wheel-mapping hysteresis (SPEC §1.2)
+  double walk_heading = 0;          ///< random-walk heading phi, global frame [rad]
+  Vec2 walk_dir{1.0, 0.0};          ///< unit(walk_heading), refreshed when phi changes
+  std::uint8_t state = 0;           ///< the controller's state code (part of state_hash)
+  Vec2 start;                       ///< initial deployment point [m]
+};
+
+SensorNeeds sensor_needs(Mode m);
+
+/// The LED colour robots show before their first control step.
+Led initial_led(Mode m);
+
+/// Sets up robot `id`'s memory at deployment.
+RobotMemory init_memory(Mode m, int id, const Pose& start, const Params& p, std::uint64_t seed);
+
+/// One control step of robot `in.id`.
+Command control(Mode m, const Percept& in, const Params& p, RobotMemory& mem);
+
+}  // namespace swarmpath::sim

@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+#include "motion.hpp"
+
+#include <cmath>
+
+namespace swarmpath::sim {
+
+Avoidance diffusion(const std::array<double, kProximityCount>& proximity, const Params& p) {
+  const auto& dirs = proximity_directions();
+  Vec2 s;
+  for (std::size_t k = 0; k < kProximityCount; ++k) s += proximity[k] * dirs[k];
+  const double len = norm(s);
+  if (len == 0.0) return {};  // nothing in range: straight ahead (angle 0, length 0)
+  if (len < p.diff_delta && std::fabs(angle_of(s)) <= deg2rad(p.diff_angle)) return {};
+  return {(-1.0 / len) * s, true};
+}
+
+Vec2 field_toward(const Pose& pose, Vec2 target) {
+  const Vec2 d = target - pose.p;
+  const double len = norm(d);
+  if (len == 0.0) return {};
+  return pose.to_local((1.0 / len) * d);
+}
+
+void update_walk_heading(double& heading, Vec2& dir, Rng& rng, const Params& p) {
+  if (rng.bernoulli(p.p_turn)) {
+    heading = wrap_angle(heading + deg2rad(p.dphi_max) * rng.uniform(-1.0, 1.0));
+    dir = unit(heading);
+  }
+}
+
+}  // namespace swarmpath::sim

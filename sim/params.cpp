@@ -1,0 +1,241 @@
+// SPDX-License-Identifier: MIT
+#include "params.hpp"
+
+#include <array>
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+#include <sstream>
+
+#include "config_error.hpp"
+#include "toml_reader.hpp"
+
+namespace swarmpath::sim {
+
+namespace {
+
+using P = Params;
+constexpr auto R = ParamType::kReal;
+constexpr auto I = ParamType::kInteger;
+constexpr auto B = ParamType::kBool;
+constexpr auto C = ParamType::kChoice;
+
+// clang-format off
+// SPEC §7, in row order: row, name, type, field, default, lo, hi, step, fix?, unit, meaning.
+const std::array kTable{
+  ParamInfo{ 1, "d_detect",       R, &P::d_detect,       30,   15,   60,    1,    "P",   "cm",    "distance at which an explorer finds the goal or a RED subgoal", {}},
+  ParamInfo{ 2, "d_sub",          R, &P::d_sub,          70,   40,   95,    1,    "P",   "cm",    "distance from the target at which a forming robot stops as a subgoal", {}},
+  ParamInfo{ 3, "R_vis",          R, &P::r_vis,          100,  80,   150,   5,    "P/H", "cm",    "camera visible range (also v in n = l/v)", {}},
+  ParamInfo{ 4, "r_rec",          R, &P::r_rec,          20,   10,   60,    1,    "P",   "cm",    "recovery repulsion range", {}},
+  ParamInfo{ 5, "k_rec",          R, &P::k_rec,          1.0,  0,    3,     0.05, "",    "",      "recovery repulsion gain", {}},
+  ParamInfo{ 6, "T_lost",         I, &P::t_lost,         3,    1,    20,    1,    "",    "ticks", "invisibility debounce before lost", {}},
+  ParamInfo{ 7, "v_max",          R, &P::v_max,          10,   5,    30,    0.5,  "",    "cm/s",  "max wheel speed; also s in l = s*t", {}},
+  ParamInfo{ 8, "v_align",        R, &P::v_align,        0.5,  0.1,  1.0,   0.05, "",    "",      "speed factor during OPT1/OPT2", {}},
+  ParamInfo{ 9, "theta_hard",     R, &P::theta_hard,     90,   60,   150,   1,    "",    "deg",   "hard-turn threshold", {}},
+  ParamInfo{10, "theta_soft",     R, &P::theta_soft,     70,   30,   90,    1,    "",    "deg",   "soft-turn threshold (<= theta_hard)", {}},
+  ParamInfo{11, "theta_none",     R, &P::theta_none,     10,   2,    30,    1,    "",    "deg",   "no-turn threshold (<= theta_soft)", {}},
+  ParamInfo{12, "diff_angle",     R, &P::diff_angle,     5,    1,    30,    1,    "",    "deg",   "half-width of the diffusion go-straight cone", {}},
+  ParamInfo{13, "diff_delta",     R, &P::diff_delta,     0.1,  0.02, 0.5,   0.01, "",    "",      "proximity magnitude treated as clear", {}},
+  ParamInfo{14, "T_explore0",     R, &P::t_explore0,     1000, 200,  5000,  50,   "",    "ticks", "initial exploration budget", {}},
+  ParamInfo{15, "dT_explore",     R, &P::dt_explore,     500,  0,    3000,  50,   "",    "ticks", "additive budget growth per failed trip", {}},
+  ParamInfo{16, "g_explore",      R, &P::g_explore,      1.0,  1.0,  2.0,   0.05, "",    "",      "multiplicative growth (applied after the additive one)", {}},
+  ParamInfo{17, "T_explore_max",  R, &P::t_explore_max,  8000, 1000, 20000, 500,  "",    "ticks", "budget cap", {}},
+  ParamInfo{18, "w_away",         R, &P::w_away,         0.5,  0,    2,     0.05, "",    "",      "weight of the away-from-nest field while exploring", {}},
+  ParamInfo{19, "w_rw",           R, &P::w_rw,           0.5,  0,    2,     0.05, "",    "",      "weight of the random-walk heading", {}},
+  ParamInfo{20, "p_turn",         R, &P::p_turn,         0.02, 0,    0.2,   0.005,"",    "",      "per-tick probability of a random heading change", {}},
+  ParamInfo{21, "dphi_max",       R, &P::dphi_max,       45,   0,    180,   5,    "",    "deg",   "max random heading change", {}},
+  ParamInfo{22, "T_rest",         R, &P::t_rest,         50,   0,    1000,  10,   "",    "ticks", "resting time at the nest (non-TA loop)", {}},
+  ParamInfo{23, "T_nest_search",  R, &P::t_nest_search,  50,   0,    300,   10,   "",    "ticks", "time inside the nest before resting", {}},
+  ParamInfo{24, "R_nest_reach",   R, &P::r_nest_reach,   100,  30,   150,   5,    "",    "cm",    "reached-the-nest radius", {}},
+  ParamInfo{25, "T_form_timeout", R, &P::t_form_timeout, 600,  100,  3000,  50,   "",    "ticks", "stall guard for SUBGOAL_FORMING", {}},
+  ParamInfo{26, "early_stop_in_rec", B, &P::early_stop_in_rec, 1, 0, 1,     1,    "",    "",      "rule #6 early stop near a recovery robot", {}},
+  ParamInfo{27, "e_tol",          R, &P::e_tol,          5,    1,    20,    0.5,  "",    "deg",   "alignment error-angle tolerance", {}},
+  ParamInfo{28, "d_tol",          R, &P::d_tol,          3,    1,    10,    0.5,  "",    "cm",    "alignment distance tolerance", {}},
+  ParamInfo{29, "T_align_max",    R, &P::t_align_max,    300,  50,   2000,  25,   "",    "ticks", "alignment time-out", {}},
+  ParamInfo{30, "lambda_mid",     R, &P::lambda_mid,     0.0,  0,    1,     0.05, "",    "",      "blend of the perpendicular foot toward the midpoint", {}},
+  ParamInfo{31, "R_keep",         R, &P::r_keep,         90,   60,   150,   1,    "",    "cm",    "max distance kept to each reference while aligning (<= R_vis)", {}},
+  ParamInfo{32, "revert_orphans", B, &P::revert_orphans, 0,    0,    1,     1,    "",    "",      "SUB_NEST/PATH_DONE revert to RED if the parent is lost", {}},
+  ParamInfo{33, "delta_open",     R, &P::delta_open,     5,    0,    60,    1,    "",    "robots","delta for open environments", {}},
+  ParamInfo{34, "delta_obstacle", R, &P::delta_obstacle, 15,   0,    60,    1,    "",    "robots","delta for obstacle environments", {}},
+  ParamInfo{35, "delta_complex",  R, &P::delta_complex,  20,   0,    60,    1,    "",    "robots","delta for complex environments", {}},
+  ParamInfo{36, "t_source",       C, &P::t_source,       0,    0,    1,     1,    "",    "",      "t in l = s*t: the budget or the elapsed trip time", {"budget", "elapsed"}},
+  ParamInfo{37, "kappa",          R, &P::kappa,          1.2,  1,    3,     0.05, "",    "",      "allocated robots' budget = kappa * t_founder", {}},
+  ParamInfo{38, "n_min",          R, &P::n_min,          2,    1,    10,    1,    "",    "robots","lower clamp on n", {}},
+  ParamInfo{39, "founder_counts_self", B, &P::founder_counts_self, 1, 0, 1,   1,    "",    "",      "the founder is one of the n", {}},
+  ParamInfo{40, "T_done",         R, &P::t_done,         50,   10,   200,   10,   "",    "ticks", "ticks DONE is broadcast", {}},
+  ParamInfo{41, "T_dm_wait",      R, &P::t_dm_wait,      3000, 500,  10000, 100,  "",    "ticks", "decision-maker timeout at the nest without a REQUEST", {}},
+  ParamInfo{42, "d_arrive",       R, &P::d_arrive,       5,    2,    20,    1,    "",    "cm",    "resting arrival tolerance at the deployment point", {}},
+  ParamInfo{ 0, "neighbour_id",   C, &P::neighbour_id,   0,    0,    1,     1,    "",    "",      "chain tracking: camera blobs carry ids, or vision-only tracking", {"vision_id", "vision_only"}},
+  ParamInfo{ 0, "track_gate",     R, &P::track_gate,     20,   5,    50,    1,    "",    "cm",    "vision-only tracking gate", {}},
+};
+
+// clang-format on
+
+std::string fmt(double v) {
+  std::ostringstream o;
+  o << std::setprecision(12) << v;
+  return o.str();
+}
+
+}  // namespace
+
+std::span<const ParamInfo> param_table() { return kTable; }
+
+const ParamInfo* find_param(std::string_view name) {
+  for (const ParamInfo& info : kTable) {
+    if (info.name == name) return &info;
+  }
+  return nullptr;
+}
+
+double get_value(const Params& p, const ParamInfo& info) {
+  return std::visit(
+      [&](auto member) -> double {
+        using T = std::decay_t<decltype(p.*member)>;
+        if constexpr (std::is_same_v<T, double>) {
+          return p.*member;
+        } else if constexpr (std::is_same_v<T, bool>) {
+          return (p.*member) ? 1.0 : 0.0;
+        } else {
+          return static_cast<double>(static_cast<int>(p.*member));
+        }
+      },
+      info.field);
+}
+
+void set_value(Params& p, const ParamInfo& info, double v) {
+  std::visit(
+      [&](auto member) {
+        using T = std::decay_t<decltype(p.*member)>;
+        if constexpr (std::is_same_v<T, double>) {
+          p.*member = v;
+        } else if constexpr (std::is_same_v<T, bool>) {
+          p.*member = v != 0.0;
+        } else {
+          p.*member = static_cast<T>(static_cast<int>(std::lround(v)));
+        }
+      },
+      info.field);
+}
+
+std::string format_value(const Params& p, const ParamInfo& info) {
+  const double v = get_value(p, info);
+  switch (info.type) {
+    case ParamType::kBool:
+      return v != 0.0 ? "true" : "false";
+    case ParamType::kChoice:
+      return "\"" + std::string(info.choices[v != 0.0 ? 1 : 0]) + "\"";
+    case ParamType::kInteger:
+    case ParamType::kReal:
+      break;
+  }
+  return fmt(v);
+}
+
+std::string check_params(const Params& p) {
+  for (const ParamInfo& info : kTable) {
+    const double v = get_value(p, info);
+    if (!std::isfinite(v) || v < info.lo || v > info.hi) {
+      return std::string(info.name) + " = " + fmt(v) + " lies outside its range [" + fmt(info.lo) + ", " +
+             fmt(info.hi) + "] (SPEC §7 row " + std::to_string(info.row) + ")";
+    }
+    if (info.type == ParamType::kInteger && v != std::floor(v)) {
+      return std::string(info.name) + " = " + fmt(v) + " must be an integer";
+    }
+  }
+  if (p.theta_soft > p.theta_hard)
+    return "theta_soft (" + fmt(p.theta_soft) + ") must be <= theta_hard (" + fmt(p.theta_hard) + ")";
+  if (p.theta_none > p.theta_soft)
+    return "theta_none (" + fmt(p.theta_none) + ") must be <= theta_soft (" + fmt(p.theta_soft) + ")";
+  if (p.d_sub >= p.r_vis) return "d_sub (" + fmt(p.d_sub) + ") must be < R_vis (" + fmt(p.r_vis) + ")";
+  if (p.r_keep > p.r_vis) return "R_keep (" + fmt(p.r_keep) + ") must be <= R_vis (" + fmt(p.r_vis) + ")";
+  if (p.t_explore0 > p.t_explore_max) {
+    return "T_explore0 (" + fmt(p.t_explore0) + ") must be <= T_explore_max (" + fmt(p.t_explore_max) + ")";
+  }
+  return {};
+}
+
+namespace {
+
+// the name of the parameter that check_params() complains about, for the error's line
+std::string_view culprit(const std::string& message) {
+  const auto end = message.find_first_of(" (");
+  return std::string_view(message).substr(0, end);
+}
+
+Params parse(const TomlDoc& doc) {
+  Params p;
+  const TableReader root(doc, doc.root(), "");
+  for (const std::string& key : root.keys()) {
+    if (key == "meta") {
+      (void)root.table("meta");  // free-form provenance: not checked
+      continue;
+    }
+    const ParamInfo* info = find_param(key);
+    if (info == nullptr) continue;  // finish() reports it with a suggestion
+    switch (info->type) {
+      case ParamType::kBool:
+        set_value(p, *info, root.boolean(key) ? 1.0 : 0.0);
+        break;
+      case ParamType::kChoice: {
+        const std::string v = root.string(key);
+        if (v == info->choices[0]) {
+          set_value(p, *info, 0.0);
+        } else if (v == info->choices[1]) {
+          set_value(p, *info, 1.0);
+        } else {
+          root.fail(key, "must be \"" + std::string(info->choices[0]) + "\" or \"" +
+                             std::string(info->choices[1]) + "\", got \"" + v + "\"");
+        }
+        break;
+      }
+      case ParamType::kInteger:
+        set_value(p, *info, static_cast<double>(root.integer(key)));
+        break;
+      case ParamType::kReal:
+        set_value(p, *info, root.number(key));
+        break;
+    }
+    const double v = get_value(p, *info);
+    if (v < info->lo || v > info->hi) {
+      root.fail(key, "value " + fmt(v) + " lies outside its range [" + fmt(info->lo) + ", " + fmt(info->hi) +
+                         "] (SPEC §7 row " + std::to_string(info->row) + ")");
+    }
+  }
+  // unknown names, with a "did you mean": mark every known name as a valid key first
+  for (const ParamInfo& info : kTable) root.allow(info.name);
+  root.finish();
+  if (const std::string err = check_params(p); !err.empty()) root.fail(culprit(err), err);
+  return p;
+}
+
+}  // namespace
+
+Params parse_params(std::string_view text, const std::string& name) {
+  const TomlDoc doc = TomlDoc::parse_string(text, name);
+  return parse(doc);
+}
+
+Params load_params(const std::string& path) {
+  const TomlDoc doc = TomlDoc::parse_file(path);
+  return parse(doc);
+}
+
+void write_params_toml(std::ostream& out, const Params& p, std::string_view header_comment) {
+  if (!header_comment.empty()) out << header_comment;
+  for (const ParamInfo& info : kTable) {
+    std::string line = std::string(info.name) + " = " + format_value(p, info);
+    if (line.size() < 32) line.resize(32, ' ');
+    out << line << "# ";
+    if (info.row > 0) out << "row " << info.row << ": ";
+    out << info.meaning;
+    if (!info.unit.empty()) out << " [" << info.unit << "]";
+    if (info.type == ParamType::kReal || info.type == ParamType::kInteger) {
+      out << ", range " << fmt(info.lo) << "-" << fmt(info.hi);
+    }
+    if (!info.fixed.empty()) out << " (fixed: " << info.fixed << ")";
+    out << "\n";
+  }
+}
+
+}  // namespace swarmpath::sim

@@ -1,0 +1,121 @@
+// SPDX-License-Identifier: MIT
+// Every tunable controller parameter of SPEC §7 (rows 1-42) in one struct, with a descriptor
+// table (name, default, range, step, fixed tag) that the params files, the genome and the
+// exporters all read. Units as in SPEC §7: cm, ticks (0.1 s), degrees.
+#pragma once
+
+#include <cstdint>
+#include <iosfwd>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace swarmpath::sim {
+
+/// Row 36: where t in l = s*t (Eq. 1) comes from.
+enum class TSource : std::uint8_t { kBudget, kElapsed };
+
+/// Neighbour identity for chain tracking (SPEC §2.1): camera blobs carry the emitter's id, or
+/// the robot tracks its reference's last global position (20 cm gate).
+enum class NeighbourId : std::uint8_t { kVisionId, kVisionOnly };
+
+struct Params {
+  // paper thresholds (SPEC §2.3)
+  double d_detect = 30;  ///< 1: goal/subgoal detection distance [cm]
+  double d_sub = 70;     ///< 2: subgoal placement distance [cm]
+  double r_vis = 100;    ///< 3: R_vis, camera range, also v in Eq. 2 [cm]
+  double r_rec = 20;     ///< 4: recovery repulsion range [cm]
+  double k_rec = 1.0;    ///< 5: recovery repulsion gain
+  double t_lost = 3;     ///< 6: T_lost, invisibility debounce [ticks]
+  // motion (SPEC §1.2, §2.1)
+  double v_max = 10;        ///< 7: max wheel speed, also s in Eq. 1 [cm/s]
+  double v_align = 0.5;     ///< 8: speed factor while aligning
+  double theta_hard = 90;   ///< 9: hard-turn threshold [deg]
+  double theta_soft = 70;   ///< 10: soft-turn threshold [deg]
+  double theta_none = 10;   ///< 11: no-turn threshold [deg]
+  double diff_angle = 5;    ///< 12: half-width of the diffusion go-straight cone [deg]
+  double diff_delta = 0.1;  ///< 13: proximity magnitude treated as clear
+  // exploration budget (SPEC §6.25)
+  double t_explore0 = 1000;       ///< 14: T_explore0 [ticks]
+  double dt_explore = 500;        ///< 15: dT_explore, additive growth per failed trip [ticks]
+  double g_explore = 1.0;         ///< 16: multiplicative growth
+  double t_explore_max = 8000;    ///< 17: T_explore_max [ticks]
+  double w_away = 0.5;            ///< 18: weight of the away-from-nest field
+  double w_rw = 0.5;              ///< 19: weight of the random-walk heading
+  double p_turn = 0.02;           ///< 20: per-tick probability of a heading change
+  double dphi_max = 45;           ///< 21: max heading change [deg]
+  double t_rest = 50;             ///< 22: T_rest [ticks]
+  double t_nest_search = 50;      ///< 23: T_nest_search [ticks]
+  double r_nest_reach = 100;      ///< 24: R_nest_reach [cm]
+  double t_form_timeout = 600;    ///< 25: SUBGOAL_FORMING stall guard [ticks]
+  bool early_stop_in_rec = true;  ///< 26: rule #6 early stop near a recovery robot
+  // alignment (SPEC §2.4)
+  double e_tol = 5;             ///< 27: error-angle tolerance [deg]
+  double d_tol = 3;             ///< 28: distance tolerance [cm]
+  double t_align_max = 300;     ///< 29: alignment time-out [ticks]
+  double lambda_mid = 0.0;      ///< 30: blend of the foot toward the midpoint
+  double r_keep = 90;           ///< 31: max distance kept to each reference [cm]
+  bool revert_orphans = false;  ///< 32: SUB_NEST/PATH_DONE revert to RED when the parent is lost
+  // task allocation (SPEC §2.6, §2.7)
+  double delta_open = 5;                ///< 33: delta for open environments [robots]
+  double delta_obstacle = 15;           ///< 34: delta for obstacle environments [robots]
+  double delta_complex = 20;            ///< 35: delta for complex environments [robots]
+  TSource t_source = TSource::kBudget;  ///< 36: t in l = s*t
+  double kappa = 1.2;                   ///< 37: allocated robots' budget = kappa * t_founder
+  double n_min = 2;                     ///< 38: lower clamp on n [robots]
+  bool founder_counts_self = true;      ///< 39: the founder is one of the n
+  double t_done = 50;                   ///< 40: ticks DONE is broadcast
+  double t_dm_wait = 3000;              ///< 41: decision-maker timeout [ticks]
+  double d_arrive = 5;                  ///< 42: resting arrival tolerance [cm]
+  // options outside the genome (SPEC §2.1, §7 "fixed experiment settings")
+  NeighbourId neighbour_id = NeighbourId::kVisionId;
+  double track_gate = 20;  ///< vision-only tracking gate [cm]
+};
+
+enum class ParamType : std::uint8_t { kReal, kInteger, kBool, kChoice };
+
+/// One row of SPEC §7.
+struct ParamInfo {
+  int row;                ///< SPEC §7 row number (0 for options outside the table)
+  std::string_view name;  ///< the SPEC's name, as written in params files
+  ParamType type;
+  std::variant<double Params::*, bool Params::*, TSource Params::*, NeighbourId Params::*> field;
+  double def;  ///< default (bools and choices as 0/1)
+  double lo;
+  double hi;
+  double step;
+  std::string_view fixed;  ///< "P" (paper value), "H" (hardware), "P/H" or ""
+  std::string_view unit;
+  std::string_view meaning;
+  std::string_view choices[2];  ///< names of choice values 0 and 1
+};
+
+/// The descriptor table, in SPEC §7 row order, followed by the non-genome options.
+std::span<const ParamInfo> param_table();
+
+/// The descriptor of `name`, or nullptr.
+const ParamInfo* find_param(std::string_view name);
+
+/// A parameter's value as a double (bools and choices as 0/1).
+double get_value(const Params& p, const ParamInfo& info);
+
+/// Sets a parameter from a double (bools: != 0; choices: index); no range check.
+void set_value(Params& p, const ParamInfo& info, double v);
+
+/// Checks ranges and the cross constraints (theta_none <= theta_soft <= theta_hard,
+/// d_sub < R_vis, R_keep <= R_vis, T_explore0 <= T_explore_max); empty when valid.
+std::string check_params(const Params& p);
+
+/// Loads a params file: top-level keys named as in SPEC §7 (unset keys keep the paper's
+/// defaults) and an optional free-form [meta] table. Throws ConfigError.
+Params load_params(const std::string& path);
+Params parse_params(std::string_view text, const std::string& name);
+
+/// Writes every parameter as a params file that load_params reads back to the same values.
+void write_params_toml(std::ostream& out, const Params& p, std::string_view header_comment = {});
+
+/// Formats a value the way params files and exports print it.
+std::string format_value(const Params& p, const ParamInfo& info);
+
+}  // namespace swarmpath::sim

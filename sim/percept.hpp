@@ -1,0 +1,79 @@
+// SPDX-License-Identifier: MIT
+// What a controller sees (Percept) and what it asks for (Command). No Box2D types: the
+// controllers are written against these readings only, as ARGoS controllers are against CCI_*.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <span>
+
+#include "led.hpp"
+#include "robot_model.hpp"
+#include "vec2.hpp"
+
+namespace swarmpath::sim {
+
+/// Positioning sensor: exact global pose (SPEC §1.3) as position and heading rotation.
+struct Pose {
+  Vec2 p;          ///< [m]
+  double c = 1.0;  ///< cos(heading)
+  double s = 0.0;  ///< sin(heading)
+
+  /// Heading [rad], (-pi, pi].
+  double yaw() const { return std::atan2(s, c); }
+
+  /// A world-frame vector in this robot's frame.
+  Vec2 to_local(Vec2 world) const { return unrotate(world, c, s); }
+
+  /// A robot-frame vector in the world frame.
+  Vec2 to_world(Vec2 local) const { return rotate(local, c, s); }
+};
+
+/// Emitter ids of the two beacons; robots are 0..N-1.
+inline constexpr int kNestEmitter = -1;
+inline constexpr int kGoalEmitter = -2;
+
+/// One camera blob per visible LED emitter (SPEC §1.3).
+struct Blob {
+  Led color = Led::kBlack;
+  int emitter = 0;         ///< robot id, kNestEmitter or kGoalEmitter
+  double bearing = 0;      ///< [rad] relative to the heading, (-pi, pi]
+  double distance_cm = 0;  ///< horizontal distance [cm]
+};
+
+using RabPayload = std::array<std::uint8_t, kRabPayloadBytes>;
+
+/// One range-and-bearing reception, sent the tick before (SPEC §1.3).
+struct RabMessage {
+  int sender = 0;
+  double range_cm = 0;
+  double bearing = 0;  ///< [rad] relative to the receiver's heading
+  RabPayload data{};
+};
+
+struct Percept {
+  std::int64_t tick = 0;
+  int id = 0;
+  Pose pose;
+  std::array<double, kProximityCount> proximity{};  ///< foot-bot readings in [0, 1]
+  std::span<const Blob> blobs;                      ///< camera, within R_vis, line of sight
+  std::span<const RabMessage> rab;                  ///< received this tick
+};
+
+struct Command {
+  double left_cm_s = 0;  ///< wheel linear speeds [cm/s]
+  double right_cm_s = 0;
+  Led led = Led::kBlack;
+  bool rab_send = false;  ///< broadcast `rab` this tick
+  RabPayload rab{};
+};
+
+/// Which sensors a controller reads; the simulator computes only these.
+struct SensorNeeds {
+  bool proximity = true;
+  bool camera = false;
+  bool rab = false;
+};
+
+}  // namespace swarmpath::sim

@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: MIT
+#include "sensors.hpp"
+
+#include <algorithm>
+
+namespace swarmpath::sim {
+
+namespace {
+
+constexpr int kMaxNear = 64;
+
+// The shapes of `bins` near p that truly come within `reach` of it, in a small local list.
+// (Plain arrays: left uninitialised, they cost nothing per call.)
+struct NearShapes {
+  int ids[kMaxNear];
+  int count = 0;
+  bool overflow = false;  // more than kMaxNear: fall back to the whole bin
+  std::span<const int> bin;
+
+  NearShapes(const SensorView& v, const ShapeBins& bins, Vec2 p, double reach) : bin(bins.near(p)) {
+    for (const int s : bin) {
+      if (signed_distance(v.shapes[static_cast<std::size_t>(s)], p) > reach) continue;
+      if (count == kMaxNear) {
+        overflow = true;
+        break;
+      }
+      ids[count++] = s;
+    }
+  }
+
+  std::span<const int> list() const {
+    return overflow ? bin : std::span<const int>(ids, static_cast<std::size_t>(count));
+  }
+};
+
+bool blocked_by_statics(const SensorView& v, const NearShapes& near, Vec2 a, Vec2 b) {
+  for (const int s : near.list()) {
+    if (segment_hits(v.shapes[static_cast<std::size_t>(s)], a, b)) return true;
+  }
+  return false;
+}
+
+bool blocked_by_robots(const SensorView& v, int self, int target, Vec2 a, Vec2 b) {
+  bool hit = false;
+  const Vec2 mid = 0.5 * (a + b);
+  v.grid->for_each_within(v.positions, mid, 0.5 * dist(a, b) + kRobotRadius, [&](int k) {
+    if (hit || k == self || k == target) return;
+    hit = segment_hits_circle(v.positions[static_cast<std::size_t>(k)], kRobotRadius, a, b);
+  });
+  return hit;
+}
+
+}  // namespace
+
+void sense_proximity(const SensorView& v, int id, std::array<double, kProximityCount>& out) {
+  out.fill(0.0);
+  const Pose& me = v.poses[static_cast<std::size_t>(id)];
+  constexpr double R = kRobotRadius;
+  constexpr double kRange = kProximityRange;
+  const double reach = R + kRange;
+
+  // robots whose body can cut a ray, in this robot's frame (at most ~24 fit around a body)
+  constexpr int kMaxRobots = 48;
+  double rx[kMaxRobots];
+  double ry[kMaxRobots];
+  int n = 0;
+  v.grid->for_each_within(v.positions, me.p, reach + R, [&](int j) {
+    if (j == id || n == kMaxRobots) return;
+    const Vec2 q = me.to_local(v.positions[static_cast<std::size_t>(j)] - me.p);
+    rx[n] = q.x;
+    ry[n++] = q.y;
+  });
+  // obstacles within reach
+  const NearShapes near(v, *v.touch_bins, me.p, reach);
+  if (n == 0 && near.count == 0 && !near.overflow) return;
+
+  // Each ray starts on the body edge, o = R d, and runs kRange along d (robot frame).
+  double best[kProximityCount];
+  std::fill(best, best + kProximityCount, kNoHit);
+  const auto& dirs = proximity_directions();
+  // a circle of radius r centred at q (robot frame): with u = q.d, the ray's quadratic reduces to
+  // b = R - u, c = |q|^2 - 2Ru + R^2 - r^2 (entry at t = -b - sqrt(b^2 - c))
+  const auto circle = [&](Vec2 q, double r) {
+    const double q2 = norm2(q);
+    for (std::size_t k = 0; k < kProximityCount; ++k) {
+      const double u = dot(q, dirs[k]);
+      const double c2 = q2 - 2.0 * R * u + R * R - r * r;
+      if (c2 <= 0.0) {  // the ray starts inside (bodies pressed together)
+        best[k] = 0.0;
+        continue;
+      }
+      const double b = R - u;
+      if (b >= 0.0) continue;  // pointing away
+      const double disc = b * b - c2;
+      if (disc < 0.0) continue;
+      const double t = -b - std::sqrt(disc);
+      if (t <= kRange && t < best[k]) best[k] = t;
+    }
+  };
+  for (int i = 0; i < n; ++i) circle({rx[i], ry[i]}, R);
+  for (const int s : near.list()) {
+    const Shape& sh = v.shapes[static_cast<std::size_t>(s)];
+    if (sh.kind == ShapeKind::kCircle) {
+      circle(me.to_local(sh.center - me.p), sh.radius);
+      continue;
+    }
+    // box: work in the box's frame, where the slab test needs no rotation per ray
+    const Vec2 pb = unrotate(me.p - sh.center, sh.c, sh.s);
+    const double cr = me.c * sh.c + me.s * sh.s;  // robot heading relative to the box
+    const double sr = me.s * sh.c - me.c * sh.s;
+    for (std::size_t k = 0; k < kProximityCount; ++k) {
+      const Vec2 d = rotate(dirs[k], cr, sr);
+      const Vec2 o = pb + R * d;
+      double t0 = 0.0;
+      double t1 = std::min(kRange, best[k]);
+      bool miss = false;
+      for (int a = 0; a < 2 && !miss; ++a) {
+        const double oa = a == 0 ? o.x : o.y;
+        const double da = a == 0 ? d.x : d.y;
+        const double ha = a == 0 ? sh.half.x : sh.half.y;
+        if (std::fabs(da) < 1e-15) {
+          miss = std::fabs(oa) > ha;
+          continue;
+        }
+        double ta = (-ha - oa) / da;
+        double tb = (ha - oa) / da;
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta);
+        t1 = std::min(t1, tb);
+        miss = t0 > t1;
+      }
+      if (!miss) best[k] = t0;
+    }
+  }
+  for (std::size_t k = 0; k < kProximityCount; ++k) {
+    if (best[k] != kNoHit) out[k] = proximity_response(best[k]);
+  }
+}
+
+void sense_camera(const SensorView& v, int id, std::vector<Blob>& out) {
+  const Pose& me = v.poses[static_cast<std::size_t>(id)];
+  const double range = v.camera_range;
+  const NearShapes near(v, *v.camera_bins, me.p, range);
+
+  const auto emit = [&](Vec2 at, Led color, int emitter) {
+    const Vec2 d = at - me.p;
+    out.push_back({color, emitter, angle_of(me.to_local(d)), 100.0 * norm(d)});
+  };
+  // beacons first: nest (blue), goal (yellow)
+  if (dist(me.p, v.nest) <= range && !blocked_by_statics(v, near, me.p, v.nest))
+    emit(v.nest, Led::kBlue, kNestEmitter);
+  if (dist(me.p, v.goal) <= range && !blocked_by_statics(v, near, me.p, v.goal))
+    emit(v.goal, Led::kYellow, kGoalEmitter);
+  // then robots with lit LEDs, in grid order
+  v.grid->for_each_within(v.positions, me.p, range, [&](int j) {
+    if (j == id) return;
+    const Led led = v.leds[static_cast<std::size_t>(j)];
+    if (led == Led::kBlack) return;
+    const Vec2 pj = v.positions[static_cast<std::size_t>(j)];
+    if (blocked_by_statics(v, near, me.p, pj)) return;
+    if (v.occlude_by_robots && blocked_by_robots(v, id, j, me.p, pj)) return;
+    emit(pj, led, j);
+  });
+}
+
+void sense_rab(const SensorView& v, int id, std::vector<RabMessage>& out) {
+  const Pose& me = v.poses[static_cast<std::size_t>(id)];
+  const NearShapes near(v, *v.rab_bins, me.p, kRabRange);
+  v.grid->for_each_within(v.positions, me.p, kRabRange, [&](int j) {
+    if (j == id || !v.rab_sending[static_cast<std::size_t>(j)]) return;
+    const Vec2 pj = v.positions[static_cast<std::size_t>(j)];
+    if (blocked_by_statics(v, near, me.p, pj)) return;
+    const Vec2 d = pj - me.p;
+    out.push_back({j, 100.0 * norm(d), angle_of(me.to_local(d)), v.rab_out[static_cast<std::size_t>(j)]});
+  });
+}
+
+}  // namespace swarmpath::sim

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// The robot's sensors (SPEC §1.3), computed from a read-only snapshot of the world:
+// 24-ray proximity ring, omnidirectional colour camera, range-and-bearing receiver.
+// Each query is local (uniform grids), so sensing all robots is linear in their number.
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "led.hpp"
+#include "percept.hpp"
+#include "spatial.hpp"
+
+namespace swarmpath::sim {
+
+/// What the sensors read: the world as it stood after the last physics step.
+struct SensorView {
+  std::span<const Pose> poses;
+  std::span<const Vec2> positions;  ///< = poses[i].p, contiguous for the grid
+  std::span<const Led> leds;
+  std::span<const std::uint8_t> rab_sending;
+  std::span<const RabPayload> rab_out;
+  const RobotGrid* grid = nullptr;
+  std::span<const Shape> shapes;           ///< every obstacle and wall
+  const ShapeBins* touch_bins = nullptr;   ///< shapes within proximity reach of a cell
+  const ShapeBins* camera_bins = nullptr;  ///< shapes within R_vis of a cell
+  const ShapeBins* rab_bins = nullptr;     ///< shapes within RAB range of a cell
+  Vec2 nest;
+  Vec2 goal;
+  double camera_range = 1.0;  ///< R_vis [m]
+  bool occlude_by_robots = false;
+};
+
+/// Proximity ring: rays of kProximityRange from the body edge at proximity_angle(k), against
+/// obstacles and other robots; readings follow proximity_response().
+void sense_proximity(const SensorView& v, int id, std::array<double, kProximityCount>& out);
+
+/// Camera: appends one blob per lit emitter (robots, nest and goal beacons) within R_vis whose
+/// line of sight is not blocked by an obstacle (or, with the flag, another robot's body).
+void sense_camera(const SensorView& v, int id, std::vector<Blob>& out);
+
+/// Range and bearing: appends the payloads broadcast last tick by robots within kRabRange with
+/// line of sight past the obstacles.
+void sense_rab(const SensorView& v, int id, std::vector<RabMessage>& out);
+
+}  // namespace swarmpath::sim

@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: MIT
+// Uniform grids that keep sensing linear in the number of robots: static obstacles binned by
+// cell (built once per world) and the robots (rebuilt after every physics step).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "geometry.hpp"
+#include "vec2.hpp"
+
+namespace swarmpath::sim {
+
+/// The cell arithmetic both grids share: a rectangle cut into nx x ny square cells; points
+/// outside (or NaN) clamp to the border cells.
+struct CellFrame {
+  Vec2 lo;
+  double inv_cell = 1.0;
+  int nx = 1;
+  int ny = 1;
+
+  CellFrame() = default;
+
+  CellFrame(Aabb bounds, double cell)
+      : lo(bounds.lo),
+        inv_cell(1.0 / cell),
+        nx(std::max(1, static_cast<int>(std::ceil((bounds.hi.x - bounds.lo.x) / cell)))),
+        ny(std::max(1, static_cast<int>(std::ceil((bounds.hi.y - bounds.lo.y) / cell)))) {}
+
+  std::size_t cells() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny); }
+
+  int cell_x(double x) const { return clamp_cell((x - lo.x) * inv_cell, nx); }
+
+  int cell_y(double y) const { return clamp_cell((y - lo.y) * inv_cell, ny); }
+
+  int index(Vec2 p) const { return cell_y(p.y) * nx + cell_x(p.x); }
+
+ private:
+  static int clamp_cell(double v, int n) {
+    if (!(v > 0.0)) return 0;  // also NaN
+    return v >= n - 1 ? n - 1 : static_cast<int>(v);
+  }
+};
+
+/// Static shapes binned by grid cell: cell c lists (ascending) every shape that comes within
+/// `reach` of some point of c, so near(p) is a superset of the shapes within `reach` of p,
+/// found with one lookup and no per-query bookkeeping.
+class ShapeBins {
+ public:
+  ShapeBins() = default;
+  ShapeBins(std::span<const Shape> shapes, Aabb bounds, double cell, double reach);
+
+  std::span<const int> near(Vec2 p) const {
+    const auto c = static_cast<std::size_t>(frame_.index(p));
+    return {items_.data() + start_[c], items_.data() + start_[c + 1]};
+  }
+
+  double reach() const { return reach_; }
+
+ private:
+  CellFrame frame_;
+  double reach_ = 0.0;
+  std::vector<int> start_{0, 0};  // CSR: cell c holds items_[start_[c] .. start_[c+1])
+  std::vector<int> items_;
+};
+
+/// Robots bucketed by cell with a stable counting sort: within a cell, ids ascend.
+class RobotGrid {
+ public:
+  void reset(Aabb bounds, double cell, std::size_t robots);
+  void build(std::span<const Vec2> positions);
+
+  /// Calls f(j) for every robot j within r of p (p's own robot included), in cell then id order.
+  template <typename F>
+  void for_each_within(std::span<const Vec2> positions, Vec2 p, double r, F&& f) const {
+    const int i0 = frame_.cell_x(p.x - r);
+    const int i1 = frame_.cell_x(p.x + r);
+    const int j0 = frame_.cell_y(p.y - r);
+    const int j1 = frame_.cell_y(p.y + r);
+    const double r2 = r * r;
+    for (int j = j0; j <= j1; ++j) {
+      const int row = j * frame_.nx;
+      for (int i = i0; i <= i1; ++i) {
+        const int c = row + i;
+        for (int k = start_[c]; k < start_[c + 1]; ++k) {
+          const int id = items_[k];
+          if (norm2(positions[id] - p) <= r2) f(id);
+        }
+      }
+    }
+  }
+
+ private:
+  CellFrame frame_;
+  std::vector<int> start_;
+  std::vector<int> items_;
+  std::vector<int> cell_of_;
+};
+
+}  // namespace swarmpath::sim

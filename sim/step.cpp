@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+#include "step.hpp"
+
+#include "controller.hpp"
+
+namespace swarmpath::sim {
+
+SensorView sensor_view(const Scenario& s, const Params& p, const World& w) {
+  SensorView view;
+  view.poses = w.poses;
+  view.positions = w.positions;
+  view.leds = w.leds;
+  view.rab_sending = w.rab_sending;
+  view.rab_out = w.rab_out;
+  view.grid = &w.grid;
+  view.shapes = w.shapes;
+  view.touch_bins = &w.touch_bins;
+  view.camera_bins = &w.camera_bins;
+  view.rab_bins = &w.rab_bins;
+  view.nest = s.nest;
+  view.goal = s.goal;
+  view.camera_range = p.r_vis / 100.0;
+  view.occlude_by_robots = s.sim.occlude_by_robots;
+  return view;
+}
+
+void sense_all(const Scenario& s, const Params& p, World& w) {
+  const SensorView view = sensor_view(s, p, w);
+  const std::size_t n = w.poses.size();
+  w.blobs.clear();
+  w.rab_inbox.clear();
+  for (std::size_t i = 0; i < n; ++i) {
+    const int id = static_cast<int>(i);
+    Percept& in = w.percepts[i];
+    in.tick = w.tick;
+    in.id = id;
+    in.pose = w.poses[i];
+    if (w.needs.proximity) sense_proximity(view, id, in.proximity);
+    w.blob_begin[i] = w.blobs.size();
+    if (w.needs.camera) sense_camera(view, id, w.blobs);
+    w.rab_begin[i] = w.rab_inbox.size();
+    if (w.needs.rab) sense_rab(view, id, w.rab_inbox);
+  }
+  w.blob_begin[n] = w.blobs.size();
+  w.rab_begin[n] = w.rab_inbox.size();
+  // spans only once the buffers have stopped growing
+  for (std::size_t i = 0; i < n; ++i) {
+    w.percepts[i].blobs = {w.blobs.data() + w.blob_begin[i], w.blob_begin[i + 1] - w.blob_begin[i]};
+    w.percepts[i].rab = {w.rab_inbox.data() + w.rab_begin[i], w.rab_begin[i + 1] - w.rab_begin[i]};
+  }
+}
+
+void control_all(const Params& p, World& w) {
+  for (std::size_t i = 0; i < w.poses.size(); ++i)
+    w.commands[i] = control(w.mode, w.percepts[i], p, w.memory[i]);
+}
+
+void act_all(World& w) {
+  for (std::size_t i = 0; i < w.poses.size(); ++i) {
+    const Command& c = w.commands[i];
+    w.physics->set_wheels(static_cast<int>(i), c.left_cm_s / 100.0, c.right_cm_s / 100.0);
+    w.leds[i] = c.led;
+    w.rab_sending[i] = c.rab_send ? 1 : 0;
+    w.rab_out[i] = c.rab;
+  }
+}
+
+void integrate(const Scenario& s, World& w, MetricsAccumulator& m) {
+  w.physics->step(s.sim.dt(), s.sim.velocity_iterations, s.sim.position_iterations);
+  w.physics->read_poses(w.poses);
+  for (std::size_t i = 0; i < w.poses.size(); ++i) {
+    m.add_distance(dist(w.positions[i], w.poses[i].p));
+    w.positions[i] = w.poses[i].p;
+  }
+  w.grid.build(w.positions);
+  ++w.tick;
+}
+
+void step(const Scenario& s, const Params& p, World& w, MetricsAccumulator& m) {
+  // sense: every robot reads the same pre-step snapshot
+  sense_all(s, p, w);
+  // control: each robot's controller, in id order
+  control_all(p, w);
+  // act: wheels, LEDs and the RAB outbox (heard by the others next tick)
+  act_all(w);
+  // physics, then the post-step snapshot the next tick senses
+  integrate(s, w, m);
+}
+
+Metrics run(const Params& p, const Scenario& s, Mode mode, std::uint64_t seed, const TickObserver& observe,
+            World* final_world) {
+  World w = make_world(s, p, mode, seed);
+  MetricsAccumulator m;
+  m.begin(w.robot_count());
+  while (w.tick < s.sim.max_ticks) {
+    step(s, p, w, m);
+    if (observe && observe(w)) break;
+  }
+  const Metrics out = m.finish(w.tick, s.sim.dt(), state_hash(w));
+  if (final_world != nullptr) *final_world = std::move(w);
+  return out;
+}
+
+Metrics evaluate(const Params& p, const Scenario& s, Mode mode, std::uint64_t seed) {
+  return run(p, s, mode, seed, {});
+}
+
+}  // namespace swarmpath::sim

@@ -1,0 +1,156 @@
+// SPDX-License-Identifier: MIT
+// The command line: help everywhere, exit code 2 with a clear message for bad input, and the
+// JSON / SVG outputs the issues ask for.
+#include "app/cli.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+namespace swarmpath::app {
+namespace {
+
+struct Result {
+  int code;
+  std::string out;
+  std::string err;
+};
+
+Result cli(const std::vector<std::string>& args) {
+  std::ostringstream out, err;
+  const int code = run_cli(args, out, err);
+  return {code, out.str(), err.str()};
+}
+
+std::string env(int k) {
+  return std::string(SWARMPATH_SOURCE_DIR) + "/configs/scenarios/paper/env" + std::to_string(k) + ".toml";
+}
+
+std::filesystem::path temp_file(const std::string& name, const std::string& text) {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("swarmpath_cli_test_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto path = dir / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+TEST(Cli, HelpForTheProgramAndEachCommand) {
+  Result r = cli({"--help"});
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("simulate"), std::string::npos);
+  EXPECT_NE(r.out.find("astar"), std::string::npos);
+  r = cli({"simulate", "--help"});
+  EXPECT_EQ(r.code, 0);
+  for (const char* opt : {"--scenario", "--robots", "--seed", "--ticks", "--svg", "--json", "--params"}) {
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+  }
+  r = cli({"astar", "--help"});
+  EXPECT_EQ(r.code, 0);
+  EXPECT_NE(r.out.find("--resolution"), std::string::npos);
+}
+
+TEST(Cli, BadCommandLinesExitWithTwo) {
+  EXPECT_EQ(cli({}).code, 2);
+  EXPECT_EQ(cli({"fly"}).code, 2);
+  EXPECT_EQ(cli({"simulate"}).code, 2);  // --scenario is required
+  const Result r = cli({"simulate", "--scenario", env(1), "--bogus"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--bogus"), std::string::npos) << r.err;
+  EXPECT_EQ(cli({"simulate", "--scenario", env(1), "--robots", "ten"}).code, 2);
+}
+
+TEST(Cli, MissingOrBrokenScenarioFile) {
+  Result r = cli({"simulate", "--scenario", "/no/such/file.toml"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("/no/such/file.toml: cannot open file"), std::string::npos) << r.err;
+  std::string text;
+  {
+    std::ifstream in(env(4));
+    std::stringstream ss;
+    ss << in.rdbuf();
+    text = ss.str();
+  }
+  text.replace(text.find("radius = 0.5"), 12, "radius = -0.5");
+  const auto bad = temp_file("env4_bad.toml", text);
+  r = cli({"simulate", "--scenario", bad.string()});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("env4_bad.toml:33: cylinder[0].radius: obstacle radius must be > 0"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(Cli, AbsurdOverridesAreRejected) {
+  Result r = cli({"simulate", "--scenario", env(1), "--robots", "1000000000"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("exceed the limit"), std::string::npos) << r.err;
+  r = cli({"simulate", "--scenario", env(1), "--ticks", "1000000000"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--ticks"), std::string::npos) << r.err;
+  r = cli({"simulate", "--scenario", env(1), "--robots", "400"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("cannot hold 400 robots"), std::string::npos) << r.err;
+  r = cli({"simulate", "--scenario", env(1), "--mode", "teleport"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("unknown mode"), std::string::npos) << r.err;
+}
+
+TEST(Cli, BadParamsFile) {
+  const auto p = temp_file("bad_params.toml", "v_max = 10\nd_sub = 200\n");
+  const Result r = cli({"simulate", "--scenario", env(1), "--params", p.string(), "--ticks", "10"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("bad_params.toml:2: d_sub: value 200 lies outside its range"), std::string::npos)
+      << r.err;
+}
+
+TEST(Cli, SimulateJsonHasTheRunFields) {
+  const Result r =
+      cli({"simulate", "--scenario", env(2), "--robots", "20", "--seed", "9", "--ticks", "200", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["robots"], 20);
+  EXPECT_EQ(j["ticks"], 200);
+  EXPECT_EQ(j["seed"], 9);
+  const std::string hash = j["state_hash"];
+  EXPECT_EQ(hash.size(), 16u);
+  EXPECT_EQ(hash.find_first_not_of("0123456789abcdef"), std::string::npos);
+  EXPECT_NEAR(j["astar8_tu"].get<double>(), 112.7, 0.2);
+  // the same command again: the same hash
+  const auto j2 = nlohmann::json::parse(
+      cli({"simulate", "--scenario", env(2), "--robots", "20", "--seed", "9", "--ticks", "200", "--json"})
+          .out);
+  EXPECT_EQ(j2["state_hash"], j["state_hash"]);
+}
+
+TEST(Cli, SimulateWritesAnSvgPicture) {
+  const auto dir = temp_file("x", "").parent_path();
+  const auto svg = dir / "env4.svg";
+  const Result r =
+      cli({"simulate", "--scenario", env(4), "--ticks", "50", "--svg", svg.string(), "--trails"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream in(svg);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  EXPECT_EQ(text.rfind("<svg", 0), 0u);
+  EXPECT_NE(text.find("#e00000"), std::string::npos);  // the A* path in red
+  EXPECT_NE(text.find("#00ff00"), std::string::npos);  // robots with green LEDs
+  EXPECT_NE(text.find("</svg>"), std::string::npos);
+}
+
+TEST(Cli, AstarJson) {
+  const Result r = cli({"astar", "--scenario", env(5), "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j["astar8_tu"].get<double>(), 158.9, 0.2);
+  EXPECT_NEAR(j["astar4_tu"].get<double>(), 185.6, 0.2);
+  EXPECT_EQ(cli({"astar", "--scenario", env(5), "--resolution", "0"}).code, 2);
+}
+
+}  // namespace
+}  // namespace swarmpath::app

@@ -1,0 +1,98 @@
+// SPDX-License-Identifier: MIT
+// The parameter table (SPEC §7) and params files.
+#include "sim/params.hpp"
+
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "sim/config_error.hpp"
+#include "test_support.hpp"
+
+namespace swarmpath::sim {
+namespace {
+
+TEST(Params, TableHoldsSpecRows1To42InOrderWithTheirDefaults) {
+  const auto table = param_table();
+  int row = 0;
+  const Params defaults;
+  for (const ParamInfo& info : table) {
+    if (info.row == 0) continue;  // options outside SPEC §7
+    EXPECT_EQ(info.row, ++row) << info.name;
+    EXPECT_EQ(get_value(defaults, info), info.def) << info.name;
+    EXPECT_LE(info.lo, info.def) << info.name;
+    EXPECT_GE(info.hi, info.def) << info.name;
+    EXPECT_GT(info.step, 0.0) << info.name;
+  }
+  EXPECT_EQ(row, 42);
+  EXPECT_TRUE(check_params(defaults).empty()) << check_params(defaults);
+}
+
+TEST(Params, PaperThresholdsAreThePapersValues) {  // paper, "Subgoal Formation": 30, 70, 100, 20
+  const Params p;
+  EXPECT_EQ(p.d_detect, 30);
+  EXPECT_EQ(p.d_sub, 70);
+  EXPECT_EQ(p.r_vis, 100);
+  EXPECT_EQ(p.r_rec, 20);
+  EXPECT_EQ(find_param("d_detect")->fixed, "P");
+  EXPECT_EQ(find_param("R_vis")->fixed, "P/H");
+}
+
+TEST(Params, FileSetsValuesAndKeepsDefaultsForTheRest) {
+  const Params p =
+      parse_params("v_max = 12.5\nT_lost = 4\nrevert_orphans = true\nt_source = \"elapsed\"\n", "p.toml");
+  EXPECT_EQ(p.v_max, 12.5);
+  EXPECT_EQ(p.t_lost, 4);
+  EXPECT_TRUE(p.revert_orphans);
+  EXPECT_EQ(p.t_source, TSource::kElapsed);
+  EXPECT_EQ(p.d_sub, 70);  // untouched
+}
+
+TEST(Params, WriteThenReadGivesTheSameValues) {
+  Params p;
+  p.v_max = 17.5;
+  p.kappa = 2.05;
+  p.early_stop_in_rec = false;
+  p.neighbour_id = NeighbourId::kVisionOnly;
+  std::ostringstream text;
+  write_params_toml(text, p, "# test\n");
+  const Params q = parse_params(text.str(), "roundtrip.toml");
+  for (const ParamInfo& info : param_table()) EXPECT_EQ(get_value(p, info), get_value(q, info)) << info.name;
+}
+
+void expect_rejected(const std::string& text, int line, const std::string& key, const std::string& fragment) {
+  try {
+    parse_params(text, "p.toml");
+    ADD_FAILURE() << "accepted: " << text;
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.line(), line) << e.what();
+    EXPECT_EQ(e.key(), key) << e.what();
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+TEST(ParamsRejects, UnknownNameWithSuggestion) {
+  expect_rejected("v_max = 10\nd_detec = 30\n", 2, "d_detec", "did you mean 'd_detect'");
+}
+
+TEST(ParamsRejects, ValueOutsideItsRange) {
+  expect_rejected("\nd_sub = 120\n", 2, "d_sub", "outside its range [40, 95]");
+  expect_rejected("T_lost = 2.5\n", 1, "T_lost", "expected an integer");
+  expect_rejected("early_stop_in_rec = \"yes\"\n", 1, "early_stop_in_rec", "expected a boolean");
+  expect_rejected("t_source = \"clock\"\n", 1, "t_source", "must be \"budget\" or \"elapsed\"");
+}
+
+TEST(ParamsRejects, CrossConstraints) {
+  expect_rejected("theta_soft = 80\ntheta_hard = 70\n", 1, "theta_soft", "must be <= theta_hard");
+  expect_rejected("R_vis = 80\nR_keep = 85\n", 2, "R_keep", "must be <= R_vis");
+}
+
+TEST(Params, PaperGenomeFileHoldsTheDefaults) {
+  const Params p = load_params(test::source_path("genomes/paper.toml"));
+  const Params defaults;
+  for (const ParamInfo& info : param_table())
+    EXPECT_EQ(get_value(p, info), get_value(defaults, info)) << info.name;
+}
+
+}  // namespace
+}  // namespace swarmpath::sim
