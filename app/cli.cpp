@@ -33,6 +33,11 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     CLI::App* c = app.add_subcommand("astar", "A* baseline path lengths of a scenario (SPEC 4.5).");
     commands.push_back({c, add_astar(*c)});
   }
+  {
+    CLI::App* c = app.add_subcommand(
+        "table", "Run a grid of scenario x robots x seed in parallel and write the paper's results table.");
+    commands.push_back({c, add_table(*c)});
+  }
 
   // CLI11 wants argv order with the program name first and parses from the back
   std::vector<std::string> reversed(args.rbegin(), args.rend());

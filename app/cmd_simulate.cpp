@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // swarmpath simulate: one run, summarised as text or JSON, optionally drawn as SVG.
+#include <cmath>
 #include <memory>
 #include <ostream>
 
@@ -26,13 +27,53 @@ struct SimulateOptions {
   std::uint64_t seed = 1;
   std::optional<std::int64_t> ticks;
   std::string mode = "diffusion";
+  bool keep_running = false;
   std::string svg;
   bool trails = false;
   bool json = false;
 };
 
+nlohmann::json tu_or_null(double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); }
+
+nlohmann::json tick_or_null(std::int64_t t) { return t < 0 ? nlohmann::json(nullptr) : nlohmann::json(t); }
+
+// the paper's figure colours: subgoal path blue, optimisation 1 purple, optimisation 2 green, A* red
+void add_path_lines(Picture& pic, const sim::Metrics& m, const sim::AStarResult* a8) {
+  if (a8 != nullptr && a8->found) {
+    pic.lines.push_back(
+        {a8->path, "#e00000", 2.0, "A* (8-connected): " + fixed(sim::to_tu(a8->length_m), 1) + " TU", false});
+  }
+  const auto add = [&](const sim::PathSnapshot& snap, const char* color, const std::string& what) {
+    if (snap.tick < 0) return;
+    pic.lines.push_back({snap.points, color, 2.0,
+                         what + ": " + fixed(sim::to_tu(snap.length_m), 1) + " TU at tick " +
+                             std::to_string(snap.tick) + " (" + std::to_string(snap.robots.size()) +
+                             " robots)",
+                         true});
+  };
+  add(m.subgoal_path, "#1f4fff", "subgoal path");
+  add(m.opt1_path, "#9b30d0", "optimisation-1 path");
+  add(m.final_path, "#00a651", "optimisation-2 (final) path");
+}
+
+}  // namespace
+
+void add_path_json(nlohmann::ordered_json& j, const sim::Metrics& m) {
+  j["success"] = m.success;
+  j["ticks_to_form"] = tick_or_null(m.ticks_to_form);
+  j["path_length_tu"] = tu_or_null(m.path_length_tu);
+  j["subgoal_path_length_tu"] = tu_or_null(m.subgoal_path_length_tu);
+  j["opt1_path_length_tu"] = tu_or_null(m.opt1_path_length_tu);
+  j["path_robots"] = m.path_robots;
+  j["ticks_to_chain"] = tick_or_null(m.ticks_to_chain);
+  j["ticks_to_opt1"] = tick_or_null(m.ticks_to_opt1);
+}
+
+namespace {
+
 int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err) {
-  const sim::Scenario s = scenario_with_overrides(o.scenario, o.robots, o.ticks);
+  sim::Scenario s = scenario_with_overrides(o.scenario, o.robots, o.ticks);
+  if (o.keep_running) s.sim.stop_when_complete = false;
   const sim::Params p = params_or_defaults(o.params);
   const sim::Mode mode = mode_from_option(o.mode);
 
@@ -68,6 +109,7 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
   }
   const double robot_ticks_per_s =
       seconds > 0 ? static_cast<double>(m.robots) * static_cast<double>(m.ticks) / seconds : 0.0;
+  const bool pf = mode == sim::Mode::kPathFormation;
 
   if (!o.svg.empty()) {
     Picture pic;
@@ -77,10 +119,11 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
     pic.caption.push_back(std::to_string(m.robots) + " robots, seed " + std::to_string(o.seed) + ", mode " +
                           std::string(sim::to_string(mode)) + ", tick " + std::to_string(m.ticks) +
                           ", state_hash " + sim::to_hex(m.state_hash));
-    if (a8 && a8->found) {
-      pic.lines.push_back({a8->path, "#e00000", 2.0,
-                           "A* (8-connected): " + fixed(sim::to_tu(a8->length_m), 1) + " TU", false});
+    if (pf) {
+      pic.caption.push_back(m.success ? "path complete at tick " + std::to_string(m.ticks_to_form)
+                                      : std::string("path not complete"));
     }
+    add_path_lines(pic, m, a8 ? &*a8 : nullptr);
     write_svg_file(o.svg, pic);
   }
 
@@ -97,10 +140,8 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
     j["state_hash"] = sim::to_hex(m.state_hash);
     j["distance_m"] = m.distance_m;
     j["mean_speed_cm_s"] = m.mean_speed_cm_s;
-    if (a8 && a8->found)
-      j["astar8_tu"] = sim::to_tu(a8->length_m);
-    else
-      j["astar8_tu"] = nullptr;
+    j["astar8_tu"] = a8 && a8->found ? nlohmann::json(sim::to_tu(a8->length_m)) : nlohmann::json(nullptr);
+    if (pf) add_path_json(j, m);
     j["table_unit_cm"] = 10;
     j["wall_seconds"] = seconds;
     j["robot_ticks_per_second"] = robot_ticks_per_s;
@@ -115,6 +156,16 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
   out << "  state_hash    " << sim::to_hex(m.state_hash) << "\n";
   out << "  mean speed    " << fixed(m.mean_speed_cm_s, 2) << " cm/s\n";
   if (a8 && a8->found) out << "  A*-8          " << fixed(sim::to_tu(a8->length_m), 1) << " TU\n";
+  if (pf) {
+    const auto length = [](double tu) { return std::isnan(tu) ? std::string("-") : fixed(tu, 1) + " TU"; };
+    out << "  success       " << (m.success ? "yes" : "no") << "\n";
+    out << "  T_chain       " << m.ticks_to_chain << " ticks, subgoal path "
+        << length(m.subgoal_path_length_tu) << "\n";
+    out << "  T_opt1        " << m.ticks_to_opt1 << " ticks, optimisation-1 path "
+        << length(m.opt1_path_length_tu) << "\n";
+    out << "  T_form        " << m.ticks_to_form << " ticks, final path " << length(m.path_length_tu) << " ("
+        << m.path_robots << " robots)\n";
+  }
   out << "  wall time     " << fixed(seconds, 3) << " s (" << fixed(robot_ticks_per_s / 1e6, 2)
       << " M robot-ticks/s)\n";
   if (!o.svg.empty()) out << "  picture       " << o.svg << "\n";
@@ -133,10 +184,14 @@ Runner add_simulate(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--ticks", o->ticks,
                  "Ticks to simulate (default: the scenario's max_ticks; 10 ticks = 1 s)");
-  app.add_option("--mode", o->mode, "Controller: diffusion (random walk with obstacle avoidance)")
+  app.add_option(
+         "--mode", o->mode,
+         "Controller: diffusion (random walk with obstacle avoidance) or pf (the paper's path formation)")
       ->capture_default_str();
+  app.add_flag("--keep-running", o->keep_running, "pf: keep simulating after the path is complete");
   app.add_option("--svg", o->svg,
-                 "Write a picture of the final state (arena, robots by LED colour, A* in red)");
+                 "Write a picture of the final state: robots by LED colour; A* red, subgoal path blue, "
+                 "optimisation-1 purple, optimisation-2 green");
   app.add_flag("--trails", o->trails, "Draw every robot's trail in the SVG");
   app.add_flag("--json", o->json, "Print one JSON object instead of the text summary");
   return [o](std::ostream& out, std::ostream& err) { return run_simulate(*o, out, err); };

@@ -16,5 +16,6 @@ using Runner = std::function<int(std::ostream& out, std::ostream& err)>;
 
 Runner add_simulate(CLI::App& app);
 Runner add_astar(CLI::App& app);
+Runner add_table(CLI::App& app);
 
 }  // namespace swarmpath::app

@@ -16,7 +16,10 @@ sim::Params params_or_defaults(const std::string& path) {
 
 sim::Mode mode_from_option(const std::string& text) {
   if (const auto m = sim::parse_mode(text)) return *m;
-  throw sim::ConfigError("--mode", 0, "", "unknown mode \"" + text + "\" (choices: diffusion)");
+  std::string choices;
+  for (const sim::Mode m : sim::kModes)
+    choices += (choices.empty() ? "" : ", ") + std::string(sim::to_string(m));
+  throw sim::ConfigError("--mode", 0, "", "unknown mode \"" + text + "\" (choices: " + choices + ")");
 }
 
 sim::Scenario scenario_with_overrides(const std::string& path, std::optional<std::int64_t> robots,

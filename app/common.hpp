@@ -7,7 +7,10 @@
 #include <optional>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "sim/controller.hpp"
+#include "sim/metrics.hpp"
 #include "sim/params.hpp"
 #include "sim/scenario.hpp"
 
@@ -22,6 +25,9 @@ sim::Mode mode_from_option(const std::string& text);
 /// A scenario with the command line's overrides (robots, ticks) applied and checked.
 sim::Scenario scenario_with_overrides(const std::string& path, std::optional<std::int64_t> robots,
                                       std::optional<std::int64_t> ticks);
+
+/// Adds the path-formation fields of `simulate --json` (success, ticks_to_form, path lengths...).
+void add_path_json(nlohmann::ordered_json& j, const sim::Metrics& m);
 
 /// Fixed-point text with `digits` decimals.
 std::string fixed(double v, int digits);

@@ -2,6 +2,7 @@
 #include "controller.hpp"
 
 #include "controllers/diffusion.hpp"
+#include "controllers/path_formation.hpp"
 
 namespace swarmpath::sim {
 
@@ -9,12 +10,16 @@ std::string_view to_string(Mode m) {
   switch (m) {
     case Mode::kDiffusion:
       return "diffusion";
+    case Mode::kPathFormation:
+      return "pf";
   }
   return "?";
 }
 
 std::optional<Mode> parse_mode(std::string_view s) {
-  if (s == "diffusion") return Mode::kDiffusion;
+  for (const Mode m : kModes) {
+    if (s == to_string(m)) return m;
+  }
   return std::nullopt;
 }
 
@@ -22,6 +27,8 @@ SensorNeeds sensor_needs(Mode m) {
   switch (m) {
     case Mode::kDiffusion:
       return {.proximity = true, .camera = false, .rab = false};
+    case Mode::kPathFormation:
+      return {.proximity = true, .camera = true, .rab = false};
   }
   return {};
 }
@@ -30,19 +37,25 @@ Led initial_led(Mode m) {
   switch (m) {
     case Mode::kDiffusion:
       return Led::kGreen;
+    case Mode::kPathFormation:
+      return led_of(PfState::kExploring);
   }
   return Led::kBlack;
 }
 
-RobotMemory init_memory(Mode m, int id, const Pose& start, const Params& p, std::uint64_t seed) {
+RobotMemory init_memory(Mode m, int id, const Pose& start, Vec2 nest, const Params& p, std::uint64_t seed) {
   RobotMemory mem;
   mem.rng = Rng(mix_seed(seed, 0x726f626f74ULL /* "robot" */, static_cast<std::uint64_t>(id)));
   mem.walk_heading = start.yaw();
   mem.walk_dir = {start.c, start.s};
   mem.start = start.p;
+  mem.nest = nest;
   switch (m) {
     case Mode::kDiffusion:
-      (void)p;  // the diffusion walk keeps no parameter-dependent memory
+      break;
+    case Mode::kPathFormation:
+      pf_init(mem.pf, p);
+      mem.state = static_cast<std::uint8_t>(mem.pf.state);
       break;
   }
   return mem;
@@ -52,6 +65,8 @@ Command control(Mode m, const Percept& in, const Params& p, RobotMemory& mem) {
   switch (m) {
     case Mode::kDiffusion:
       return diffusion_step(in, p, mem);
+    case Mode::kPathFormation:
+      return path_formation_step(in, p, mem);
   }
   return {};
 }

@@ -7,6 +7,8 @@
 #include <optional>
 #include <string_view>
 
+#include "controllers/navigation.hpp"
+#include "controllers/path_formation.hpp"
 #include "drive.hpp"
 #include "motion.hpp"
 #include "params.hpp"
@@ -17,8 +19,12 @@ namespace swarmpath::sim {
 
 /// Which controller every robot runs.
 enum class Mode : std::uint8_t {
-  kDiffusion,  ///< random walk with proximity obstacle avoidance (ARGoS diffusion example)
+  kDiffusion,      ///< random walk with proximity obstacle avoidance (ARGoS diffusion example)
+  kPathFormation,  ///< the paper's path formation, all robots (SPEC §2.3, "without TA")
 };
+
+/// Every mode, for listings and --help.
+inline constexpr Mode kModes[] = {Mode::kDiffusion, Mode::kPathFormation};
 
 std::string_view to_string(Mode m);
 std::optional<Mode> parse_mode(std::string_view s);
@@ -31,6 +37,9 @@ struct RobotMemory {
   Vec2 walk_dir{1.0, 0.0};          ///< unit(walk_heading), refreshed when phi changes
   std::uint8_t state = 0;           ///< the controller's state code (part of state_hash)
   Vec2 start;                       ///< initial deployment point [m]
+  Vec2 nest;                        ///< the nest's position, from the positioning frame [m]
+  PfMemory pf;                      ///< path formation (Mode::kPathFormation)
+  NavMemory nav;                    ///< going to a point (nest, deployment point)
 };
 
 SensorNeeds sensor_needs(Mode m);
@@ -39,7 +48,7 @@ SensorNeeds sensor_needs(Mode m);
 Led initial_led(Mode m);
 
 /// Sets up robot `id`'s memory at deployment.
-RobotMemory init_memory(Mode m, int id, const Pose& start, const Params& p, std::uint64_t seed);
+RobotMemory init_memory(Mode m, int id, const Pose& start, Vec2 nest, const Params& p, std::uint64_t seed);
 
 /// One control step of robot `in.id`.
 Command control(Mode m, const Percept& in, const Params& p, RobotMemory& mem);

@@ -1,11 +1,21 @@
 // SPDX-License-Identifier: MIT
 #include "metrics.hpp"
 
+#include "astar.hpp"
+
 namespace swarmpath::sim {
 
 void MetricsAccumulator::begin(int robots) {
   robots_ = robots;
   distance_m_ = 0;
+  path_ = PathObserver{};
+}
+
+void MetricsAccumulator::observe(const Scenario& s, const World& w) {
+  if (w.mode == Mode::kPathFormation) {
+    watch_path_ = true;
+    path_.observe(s, w);
+  }
 }
 
 Metrics MetricsAccumulator::finish(std::int64_t ticks, double dt, std::uint64_t hash) const {
@@ -16,6 +26,20 @@ Metrics MetricsAccumulator::finish(std::int64_t ticks, double dt, std::uint64_t 
   m.distance_m = distance_m_;
   const double robot_seconds = static_cast<double>(robots_) * static_cast<double>(ticks) * dt;
   m.mean_speed_cm_s = robot_seconds > 0 ? 100.0 * distance_m_ / robot_seconds : 0.0;
+  if (!watch_path_) return m;
+  m.subgoal_path = path_.subgoal_path();
+  m.opt1_path = path_.opt1_path();
+  m.final_path = path_.final_path();
+  m.success = path_.complete();
+  m.ticks_to_chain = m.subgoal_path.tick;
+  m.ticks_to_opt1 = m.opt1_path.tick;
+  if (m.subgoal_path.tick >= 0) m.subgoal_path_length_tu = to_tu(m.subgoal_path.length_m);
+  if (m.opt1_path.tick >= 0) m.opt1_path_length_tu = to_tu(m.opt1_path.length_m);
+  if (m.success) {
+    m.ticks_to_form = m.final_path.tick;
+    m.path_length_tu = to_tu(m.final_path.length_m);
+    m.path_robots = static_cast<int>(m.final_path.robots.size());
+  }
   return m;
 }
 

@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: MIT
-// What a run measures (SPEC §4). The foundation measures the run itself; the path metrics
-// join with the path-formation controller.
+// What a run measures (SPEC §4): the run itself, and for path formation the success, the ticks
+// to form the path and the lengths of the subgoal, optimisation-1 and final paths.
 #pragma once
 
 #include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "path_metrics.hpp"
 
 namespace swarmpath::sim {
 
@@ -13,6 +17,17 @@ struct Metrics {
   std::uint64_t state_hash = 0;  ///< state_hash() of the final world
   double distance_m = 0;         ///< total distance driven by all robots [m]
   double mean_speed_cm_s = 0;    ///< distance / (robots * simulated time) [cm/s]
+
+  // path formation (SPEC §4); lengths in table units (1 TU = 10 cm), NaN when not reached
+  bool success = false;              ///< path complete within max_ticks (SPEC §4.4)
+  std::int64_t ticks_to_form = -1;   ///< T_form (SPEC §4.1)
+  std::int64_t ticks_to_chain = -1;  ///< T_chain: the subgoal chain reaches the nest
+  std::int64_t ticks_to_opt1 = -1;   ///< T_opt1: optimisation 1 done
+  double path_length_tu = std::numeric_limits<double>::quiet_NaN();          ///< final path (§4.2)
+  double subgoal_path_length_tu = std::numeric_limits<double>::quiet_NaN();  ///< at T_chain
+  double opt1_path_length_tu = std::numeric_limits<double>::quiet_NaN();     ///< at T_opt1
+  int path_robots = 0;                                                       ///< robots in the final chain
+  PathSnapshot subgoal_path, opt1_path, final_path;                          ///< for pictures
 };
 
 /// Accumulates per-tick observations; finish() fills the final fields.
@@ -23,11 +38,19 @@ class MetricsAccumulator {
   /// Call after every physics step with each robot's displacement that tick [m].
   void add_distance(double metres) { distance_m_ += metres; }
 
+  /// Call after every tick.
+  void observe(const Scenario& s, const World& w);
+
+  /// The path is complete (path-formation modes).
+  bool complete() const { return path_.complete(); }
+
   Metrics finish(std::int64_t ticks, double dt, std::uint64_t hash) const;
 
  private:
   int robots_ = 0;
   double distance_m_ = 0;
+  bool watch_path_ = false;
+  PathObserver path_;
 };
 
 }  // namespace swarmpath::sim

@@ -67,6 +67,10 @@ const std::array kTable{
   ParamInfo{42, "d_arrive",       R, &P::d_arrive,       5,    2,    20,    1,    "",    "cm",    "resting arrival tolerance at the deployment point", {}},
   ParamInfo{ 0, "neighbour_id",   C, &P::neighbour_id,   0,    0,    1,     1,    "",    "",      "chain tracking: camera blobs carry ids, or vision-only tracking", {"vision_id", "vision_only"}},
   ParamInfo{ 0, "track_gate",     R, &P::track_gate,     20,   5,    50,    1,    "",    "cm",    "vision-only tracking gate", {}},
+  ParamInfo{ 0, "w_seek",         R, &P::w_seek,         1.0,  0,    3,     0.05, "",    "",      "pull of an explorer toward the goal or RED light it sees (0: none)", {}},
+  ParamInfo{ 0, "T_trap",         R, &P::t_trap,         100,  0,    2000,  10,   "",    "ticks", "ticks without progress toward the nest before edge following (0: never)", {}},
+  ParamInfo{ 0, "T_follow",       R, &P::t_follow,       2000, 50,   5000,  50,   "",    "ticks", "longest edge following", {}},
+  ParamInfo{ 0, "site_fidelity",  B, &P::site_fidelity,  1,    0,    1,     1,    "",    "",      "start an exploration trip toward where the goal or a subgoal was last seen", {}},
 };
 
 // clang-format on

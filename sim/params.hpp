@@ -70,7 +70,11 @@ struct Params {
   double d_arrive = 5;                  ///< 42: resting arrival tolerance [cm]
   // options outside the genome (SPEC §2.1, §7 "fixed experiment settings")
   NeighbourId neighbour_id = NeighbourId::kVisionId;
-  double track_gate = 20;  ///< vision-only tracking gate [cm]
+  double track_gate = 20;     ///< vision-only tracking gate [cm]
+  double w_seek = 1.0;        ///< weight of the pull toward a goal or RED light an explorer sees
+  double t_trap = 100;        ///< ticks without progress toward a point before edge following [ticks]
+  double t_follow = 2000;     ///< longest edge following [ticks]
+  bool site_fidelity = true;  ///< start an exploration trip toward the last goal/subgoal sighting
 };
 
 enum class ParamType : std::uint8_t { kReal, kInteger, kBool, kChoice };

@@ -33,6 +33,8 @@ struct Pose {
 /// Emitter ids of the two beacons; robots are 0..N-1.
 inline constexpr int kNestEmitter = -1;
 inline constexpr int kGoalEmitter = -2;
+/// An emitter id that matches nothing ("no reference", "no tag").
+inline constexpr int kNobody = -100;
 
 /// One camera blob per visible LED emitter (SPEC §1.3).
 struct Blob {
@@ -40,6 +42,7 @@ struct Blob {
   int emitter = 0;         ///< robot id, kNestEmitter or kGoalEmitter
   double bearing = 0;      ///< [rad] relative to the heading, (-pi, pi]
   double distance_cm = 0;  ///< horizontal distance [cm]
+  int tag = kNobody;       ///< what the emitter advertises with its light (vision + ID, SPEC §2.1)
 };
 
 using RabPayload = std::array<std::uint8_t, kRabPayloadBytes>;
@@ -65,6 +68,7 @@ struct Command {
   double left_cm_s = 0;  ///< wheel linear speeds [cm/s]
   double right_cm_s = 0;
   Led led = Led::kBlack;
+  int tag = kNobody;      ///< advertised with the LED to cameras that read ids (vision + ID)
   bool rab_send = false;  ///< broadcast `rab` this tick
   RabPayload rab{};
 };

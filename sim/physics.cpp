@@ -20,9 +20,31 @@ float b2Timer::GetMilliseconds() const { return 0.0f; }
 
 namespace swarmpath::sim {
 
+namespace {
+
+// A stopped robot brakes: its body is made this much heavier, so that a robot bumping into it
+// barely moves it (velocity-driven Box2D bodies would otherwise share momentum equally, and a
+// static subgoal would be shoved at half the pusher's speed). ARGoS's foot-bot gets the same
+// effect from the friction of its locked treels.
+constexpr float kBrakeMassFactor = 100.0f;
+
+b2MassData robot_mass(float factor) {
+  const float r = static_cast<float>(kRobotRadius);
+  b2MassData md;
+  md.mass = factor * b2_pi * r * r;  // density 1
+  md.center.SetZero();
+  md.I = 0.5f * md.mass * r * r;
+  return md;
+}
+
+}  // namespace
+
 struct Physics::Impl {
   b2World world{b2Vec2(0.0f, 0.0f)};
   std::vector<b2Body*> robots;
+  std::vector<std::uint8_t> braked;
+  b2MassData free_mass = robot_mass(1.0f);
+  b2MassData braked_mass = robot_mass(kBrakeMassFactor);
 };
 
 Physics::Physics(std::span<const Shape> obstacles) : impl_(std::make_unique<Impl>()) {
@@ -72,11 +94,18 @@ int Physics::add_robot(Vec2 position, double yaw) {
   fd.restitution = 0.0f;
   body->CreateFixture(&fd);
   impl_->robots.push_back(body);
+  impl_->braked.push_back(0);
   return static_cast<int>(impl_->robots.size()) - 1;
 }
 
 void Physics::set_wheels(int id, double left_m_s, double right_m_s) {
-  b2Body* body = impl_->robots[static_cast<std::size_t>(id)];
+  const auto i = static_cast<std::size_t>(id);
+  b2Body* body = impl_->robots[i];
+  const std::uint8_t brake = left_m_s == 0.0 && right_m_s == 0.0 ? 1 : 0;
+  if (brake != impl_->braked[i]) {
+    body->SetMassData(brake ? &impl_->braked_mass : &impl_->free_mass);
+    impl_->braked[i] = brake;
+  }
   const double v = 0.5 * (left_m_s + right_m_s);
   const double omega = (right_m_s - left_m_s) / kWheelBase;
   const b2Rot& q = body->GetTransform().q;

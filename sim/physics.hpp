@@ -24,7 +24,8 @@ class Physics {
   int add_robot(Vec2 position, double yaw);
 
   /// Differential drive (SPEC §1.2): v = (vL + vR)/2, omega = (vR - vL)/wheel base.
-  /// Wheel speeds in m/s; applied as the body's velocity for the next step.
+  /// Wheel speeds in m/s; applied as the body's velocity for the next step. Both wheels at zero
+  /// brake the robot (a much heavier body, hard to push).
   void set_wheels(int id, double left_m_s, double right_m_s);
 
   /// One physics step of dt seconds.

@@ -15,6 +15,8 @@ inline constexpr double kWheelBase = 0.14;           ///< inter-wheel distance [
 inline constexpr std::size_t kProximityCount = 24;  ///< IR proximity ring
 inline constexpr double kProximityRange = 0.10;     ///< ray length from the body edge [m]
 
+inline constexpr double kLedRingRadius = 0.090;  ///< the 12-LED ring [m] (SPEC §1.1)
+
 inline constexpr double kRabRange = 3.0;             ///< range-and-bearing range [m]
 inline constexpr std::size_t kRabPayloadBytes = 10;  ///< range-and-bearing payload [bytes]
 

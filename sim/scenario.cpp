@@ -268,6 +268,7 @@ Scenario parse(const TomlDoc& doc) {
     require_range(*sim, "position_iterations", static_cast<double>(pi), 1, 100);
     s.sim.position_iterations = static_cast<int>(pi);
     s.sim.occlude_by_robots = sim->boolean_or("occlude_by_robots", false);
+    s.sim.stop_when_complete = sim->boolean_or("stop_when_complete", true);
     s.sim.grid_cell = sim->number_or("grid_cell", 1.0);
     require_range(*sim, "grid_cell", s.sim.grid_cell, 0.1, 10.0);
     sim->finish();

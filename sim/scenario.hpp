@@ -44,6 +44,7 @@ struct SimSettings {
   int velocity_iterations = 8;     ///< Box2D solver iterations
   int position_iterations = 3;
   bool occlude_by_robots = false;  ///< robot bodies block the camera (SPEC §1.3)
+  bool stop_when_complete = true;  ///< end a path-formation run once the path is complete
   double grid_cell = 1.0;          ///< neighbour-grid cell size [m]
 
   double dt() const { return 1.0 / ticks_per_second; }

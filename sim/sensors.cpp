@@ -50,6 +50,21 @@ bool blocked_by_robots(const SensorView& v, int self, int target, Vec2 a, Vec2 b
   return hit;
 }
 
+// A robot's LEDs form a ring of radius 9 cm (ARGoS ray-casts each LED): it is seen when the
+// line to its centre, or to either of the ring's two tangent points, is clear.
+bool ring_visible(const SensorView& v, const NearShapes& near, int self, int target, Vec2 from, Vec2 at) {
+  const auto clear = [&](Vec2 to) {
+    return !blocked_by_statics(v, near, from, to) &&
+           !(v.occlude_by_robots && blocked_by_robots(v, self, target, from, to));
+  };
+  if (clear(at)) return true;
+  const Vec2 d = at - from;
+  const double len = norm(d);
+  if (len == 0.0) return false;
+  const Vec2 side = (kLedRingRadius / len) * Vec2{-d.y, d.x};
+  return clear(at + side) || clear(at - side);
+}
+
 }  // namespace
 
 void sense_proximity(const SensorView& v, int id, std::array<double, kProximityCount>& out) {
@@ -142,24 +157,23 @@ void sense_camera(const SensorView& v, int id, std::vector<Blob>& out) {
   const double range = v.camera_range;
   const NearShapes near(v, *v.camera_bins, me.p, range);
 
-  const auto emit = [&](Vec2 at, Led color, int emitter) {
+  const auto emit = [&](Vec2 at, Led color, int emitter, int tag) {
     const Vec2 d = at - me.p;
-    out.push_back({color, emitter, angle_of(me.to_local(d)), 100.0 * norm(d)});
+    out.push_back({color, emitter, angle_of(me.to_local(d)), 100.0 * norm(d), tag});
   };
   // beacons first: nest (blue), goal (yellow)
   if (dist(me.p, v.nest) <= range && !blocked_by_statics(v, near, me.p, v.nest))
-    emit(v.nest, Led::kBlue, kNestEmitter);
+    emit(v.nest, Led::kBlue, kNestEmitter, kNobody);
   if (dist(me.p, v.goal) <= range && !blocked_by_statics(v, near, me.p, v.goal))
-    emit(v.goal, Led::kYellow, kGoalEmitter);
+    emit(v.goal, Led::kYellow, kGoalEmitter, kNobody);
   // then robots with lit LEDs, in grid order
   v.grid->for_each_within(v.positions, me.p, range, [&](int j) {
     if (j == id) return;
     const Led led = v.leds[static_cast<std::size_t>(j)];
     if (led == Led::kBlack) return;
     const Vec2 pj = v.positions[static_cast<std::size_t>(j)];
-    if (blocked_by_statics(v, near, me.p, pj)) return;
-    if (v.occlude_by_robots && blocked_by_robots(v, id, j, me.p, pj)) return;
-    emit(pj, led, j);
+    if (!ring_visible(v, near, id, j, me.p, pj)) return;
+    emit(pj, led, j, v.tags[static_cast<std::size_t>(j)]);
   });
 }
 

@@ -19,6 +19,7 @@ struct SensorView {
   std::span<const Pose> poses;
   std::span<const Vec2> positions;  ///< = poses[i].p, contiguous for the grid
   std::span<const Led> leds;
+  std::span<const int> tags;
   std::span<const std::uint8_t> rab_sending;
   std::span<const RabPayload> rab_out;
   const RobotGrid* grid = nullptr;
@@ -37,7 +38,9 @@ struct SensorView {
 void sense_proximity(const SensorView& v, int id, std::array<double, kProximityCount>& out);
 
 /// Camera: appends one blob per lit emitter (robots, nest and goal beacons) within R_vis whose
-/// line of sight is not blocked by an obstacle (or, with the flag, another robot's body).
+/// line of sight is not blocked by an obstacle (or, with the flag, another robot's body). A
+/// robot counts as seen when its LED ring is: the line to its centre or to either of the ring's
+/// tangent points (9 cm to the side) is clear.
 void sense_camera(const SensorView& v, int id, std::vector<Blob>& out);
 
 /// Range and bearing: appends the payloads broadcast last tick by robots within kRabRange with

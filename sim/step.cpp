@@ -10,6 +10,7 @@ SensorView sensor_view(const Scenario& s, const Params& p, const World& w) {
   view.poses = w.poses;
   view.positions = w.positions;
   view.leds = w.leds;
+  view.tags = w.tags;
   view.rab_sending = w.rab_sending;
   view.rab_out = w.rab_out;
   view.grid = &w.grid;
@@ -60,6 +61,7 @@ void act_all(World& w) {
     const Command& c = w.commands[i];
     w.physics->set_wheels(static_cast<int>(i), c.left_cm_s / 100.0, c.right_cm_s / 100.0);
     w.leds[i] = c.led;
+    w.tags[i] = c.tag;
     w.rab_sending[i] = c.rab_send ? 1 : 0;
     w.rab_out[i] = c.rab;
   }
@@ -85,6 +87,8 @@ void step(const Scenario& s, const Params& p, World& w, MetricsAccumulator& m) {
   act_all(w);
   // physics, then the post-step snapshot the next tick senses
   integrate(s, w, m);
+  // measure
+  m.observe(s, w);
 }
 
 Metrics run(const Params& p, const Scenario& s, Mode mode, std::uint64_t seed, const TickObserver& observe,
@@ -95,6 +99,7 @@ Metrics run(const Params& p, const Scenario& s, Mode mode, std::uint64_t seed, c
   while (w.tick < s.sim.max_ticks) {
     step(s, p, w, m);
     if (observe && observe(w)) break;
+    if (s.sim.stop_when_complete && m.complete()) break;
   }
   const Metrics out = m.finish(w.tick, s.sim.dt(), state_hash(w));
   if (final_world != nullptr) *final_world = std::move(w);

@@ -125,13 +125,14 @@ World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t se
   w.poses.resize(n);
   w.positions.resize(n);
   w.leds.assign(n, initial_led(mode));
+  w.tags.assign(n, kNobody);
   w.rab_sending.assign(n, 0);
   w.rab_out.assign(n, RabPayload{});
   w.commands.assign(n, Command{});
   w.memory.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
     w.physics->add_robot(start[i].p, start[i].yaw());
-    w.memory.push_back(init_memory(mode, static_cast<int>(i), start[i], p, seed));
+    w.memory.push_back(init_memory(mode, static_cast<int>(i), start[i], s.nest, p, seed));
   }
   // poses as Box2D stores them (single precision), so that tick 0 senses what physics holds
   w.physics->read_poses(w.poses);

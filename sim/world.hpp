@@ -33,6 +33,7 @@ struct World {
   std::vector<Pose> poses;
   std::vector<Vec2> positions;
   std::vector<Led> leds;                  ///< as set by the last act phase
+  std::vector<int> tags;                  ///< advertised with the LEDs (vision + ID)
   std::vector<std::uint8_t> rab_sending;  ///< broadcast last tick
   std::vector<RabPayload> rab_out;
   std::vector<RobotMemory> memory;

@@ -1,0 +1,113 @@
+// SPDX-License-Identifier: MIT
+// swarmpath table: a grid of scenario x robots x seed in parallel, written as the paper's table.
+#include <fstream>
+#include <memory>
+#include <ostream>
+
+#include <CLI/CLI.hpp>
+#include <omp.h>
+
+#include "cli.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+#include "experiment.hpp"
+#include "sim/astar.hpp"
+#include "sim/config_error.hpp"
+#include "table_report.hpp"
+
+namespace swarmpath::app {
+
+namespace {
+
+struct TableOptions {
+  std::vector<std::string> scenarios{"configs/scenarios/paper"};
+  std::vector<int> robots{60, 70, 80, 90, 100};
+  int seeds = 10;
+  std::uint64_t seed_base = 1;
+  std::string mode = "pf";
+  std::string params;
+  std::optional<std::int64_t> ticks;
+  int threads = 0;
+  std::string json;
+  std::string csv;
+  std::string markdown;
+};
+
+void write_file(const std::string& path, const std::string& text) {
+  std::ofstream f(path);
+  if (!f || !(f << text)) throw std::runtime_error("cannot write " + path);
+}
+
+int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
+  if (o.seeds < 1 || o.seeds > 100000) throw sim::ConfigError("--seeds", 0, "", "must lie in [1, 100000]");
+  if (o.robots.empty()) throw sim::ConfigError("--robots", 0, "", "give at least one robot count");
+  const sim::Mode mode = mode_from_option(o.mode);
+  const sim::Params p = params_or_defaults(o.params);
+  std::vector<sim::Scenario> scenarios;
+  for (const std::string& f : scenario_files(o.scenarios)) scenarios.push_back(scenario_with_overrides(f, {}, o.ticks));
+  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
+
+  // the A* baseline of each scenario, once
+  std::vector<double> astar8(scenarios.size());
+  for (std::size_t s = 0; s < scenarios.size(); ++s) {
+    const sim::AStarResult a = sim::astar(scenarios[s]);
+    astar8[s] = a.found ? sim::to_tu(a.length_m) : std::numeric_limits<double>::quiet_NaN();
+  }
+
+  const std::vector<GridCase> grid = make_grid(scenarios.size(), o.robots, o.seeds, o.seed_base);
+  const bool tty = stderr_is_terminal();
+  const Stopwatch clock;
+  std::size_t last_line = 0;
+  const GridProgress progress = [&](std::size_t done, std::size_t total) {
+    const double t = clock.seconds();
+    const double eta = done > 0 ? t * static_cast<double>(total - done) / static_cast<double>(done) : 0.0;
+    if (tty) {
+      err << "\r  " << done << " / " << total << " runs, " << fixed(t, 0) << " s, ETA " << fixed(eta, 0) << " s   "
+          << std::flush;
+    } else if (done == total || done >= last_line + std::max<std::size_t>(1, total / 10)) {
+      last_line = done;
+      err << "  " << done << " / " << total << " runs, " << fixed(t, 0) << " s\n";
+    }
+  };
+  err << "swarmpath table: " << scenarios.size() << " scenarios x " << o.robots.size() << " robot counts x "
+      << o.seeds << " seeds = " << grid.size() << " runs, mode " << sim::to_string(mode) << ", " << threads
+      << " threads\n";
+  const std::vector<GridRun> runs = run_grid(scenarios, grid, p, mode, threads, progress);
+  if (tty) err << "\n";
+  err << "  done in " << fixed(clock.seconds(), 1) << " s\n";
+
+  const TableReport report = summarise(scenarios, astar8, runs, std::string(sim::to_string(mode)));
+  if (!o.json.empty()) write_file(o.json, table_json(scenarios, astar8, runs, report).dump(2) + "\n");
+  if (!o.csv.empty()) {
+    std::ostringstream csv;
+    write_runs_csv(csv, scenarios, astar8, runs, std::string(sim::to_string(mode)));
+    write_file(o.csv, csv.str());
+  }
+  std::ostringstream md;
+  write_markdown(md, report);
+  if (!o.markdown.empty()) write_file(o.markdown, md.str());
+  out << md.str();
+  return kExitOk;
+}
+
+}  // namespace
+
+Runner add_table(CLI::App& app) {
+  auto o = std::make_shared<TableOptions>();
+  app.add_option("--scenarios", o->scenarios, "Scenario files or directories of *.toml")->capture_default_str();
+  app.add_option("--robots", o->robots, "Robot counts, e.g. 60,70,80,90,100")->delimiter(',')->capture_default_str();
+  app.add_option("--seeds", o->seeds, "Seeds per (scenario, robots) case")->capture_default_str();
+  app.add_option("--seed-base", o->seed_base, "The first seed; a case uses seed-base ... seed-base+seeds-1")
+      ->capture_default_str();
+  app.add_option("--mode", o->mode, "Controller: pf (path formation)")->capture_default_str();
+  app.add_option("--params", o->params, "Params file (default: the paper's defaults)");
+  app.add_option("--ticks", o->ticks, "Override every scenario's max_ticks");
+  app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");
+  app.add_option("--json", o->json, "Write runs, cases, environments and summary as JSON");
+  app.add_option("--csv", o->csv, "Write one CSV line per run");
+  app.add_option("--md", o->markdown, "Write the markdown table to this file too");
+  return [o](std::ostream& out, std::ostream& err) { return run_table(*o, out, err); };
+}
+
+}  // namespace swarmpath::app

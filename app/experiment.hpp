@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: MIT
+// A grid of simulations (scenario x robot count x seed), run in parallel with OpenMP: one
+// simulation per thread, each result in its own slot, so the results do not depend on the
+// number of threads.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "sim/controller.hpp"
+#include "sim/metrics.hpp"
+#include "sim/params.hpp"
+#include "sim/scenario.hpp"
+
+namespace swarmpath::app {
+
+struct GridCase {
+  std::size_t scenario = 0;  ///< index into the scenario list
+  int robots = 0;
+  std::uint64_t seed = 0;
+};
+
+struct GridRun {
+  GridCase c;
+  sim::Metrics m;
+};
+
+/// Every (scenario, robots, seed) in that nesting order; seeds are seed_base .. seed_base+seeds-1.
+std::vector<GridCase> make_grid(std::size_t scenarios, const std::vector<int>& robots, int seeds,
+                                std::uint64_t seed_base);
+
+/// Called from the calling thread after each finished run (done, total); may print progress.
+using GridProgress = std::function<void(std::size_t done, std::size_t total)>;
+
+/// Runs the grid on `threads` threads; results in grid order.
+std::vector<GridRun> run_grid(const std::vector<sim::Scenario>& scenarios, const std::vector<GridCase>& grid,
+                              const sim::Params& p, sim::Mode mode, int threads, const GridProgress& progress);
+
+/// Scenario files: each path as given, or for a directory every *.toml in it, sorted by name.
+std::vector<std::string> scenario_files(const std::vector<std::string>& paths);
+
+}  // namespace swarmpath::app

@@ -1,0 +1,74 @@
+// SPDX-License-Identifier: MIT
+#include "navigation.hpp"
+
+#include <cmath>
+
+#include "sim/motion.hpp"
+#include "sim/robot_model.hpp"
+
+namespace swarmpath::sim {
+
+void nav_reset(NavMemory& nav) {
+  const std::int8_t side = nav.side;
+  nav = NavMemory{};
+  nav.side = side;
+}
+
+bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, const Percept& in, Vec2 wanted) {
+  constexpr double kProgress = 5.0;         // cm that count as progress
+  constexpr double kLeave = 20.0;           // cm past the start of a following that end it
+  constexpr std::int64_t kEdgeLost = 100;   // ticks without a reading that end it
+  const auto& dirs = proximity_directions();
+  bool touching = false;
+  bool way_free = true;  // nothing sensed within 60 degrees of the wanted direction
+  const double wanted_len = norm(wanted);
+  for (std::size_t k = 0; k < kProximityCount; ++k) {
+    if (in.proximity[k] <= 0.0) continue;
+    touching = true;
+    if (wanted_len > 0.0 && dot(dirs[k], wanted) >= 0.5 * wanted_len) way_free = false;
+  }
+  if (progress_cm > nav.best + kProgress) {
+    nav.best = progress_cm;
+    nav.stalled = 0;
+  } else {
+    ++nav.stalled;
+  }
+  if (nav.following > 0) {
+    nav.off_edge = touching ? 0 : nav.off_edge + 1;
+    if ((progress_cm > nav.follow_from + kLeave && way_free) || nav.off_edge >= kEdgeLost) {
+      nav.following = 0;  // past the obstacle, or it is gone
+    } else if (--nav.following == 0) {
+      nav.gave_up = true;
+      nav.side = static_cast<std::int8_t>(-nav.side);  // try the other way next time
+    }
+  } else if (p.t_trap > 0 && static_cast<double>(nav.stalled) >= p.t_trap && touching) {
+    nav.off_edge = 0;
+    if (nav.side == 0) nav.side = rng.bernoulli(0.5) ? 1 : -1;
+    nav.following = static_cast<std::int64_t>(p.t_follow);
+    nav.follow_from = progress_cm;
+    nav.best = progress_cm;
+    nav.stalled = 0;
+  }
+  return nav.following > 0;
+}
+
+Vec2 follow_edge(const Percept& in, int side) {
+  constexpr double kSetPoint = 0.3;  // proximity magnitude of about 4 cm on two sensors
+  const auto& dirs = proximity_directions();
+  Vec2 s;
+  for (std::size_t k = 0; k < kProximityCount; ++k) s += in.proximity[k] * dirs[k];
+  const double mag = norm(s);
+  if (mag == 0.0) return unit(-side * deg2rad(45.0));
+  const Vec2 away = (-1.0 / mag) * s;
+  const Vec2 tangent = side > 0 ? Vec2{away.y, -away.x} : Vec2{-away.y, away.x};  // away turned -/+90 deg
+  const Vec2 v = tangent + (mag - kSetPoint) * away;
+  return (1.0 / norm(v)) * v;
+}
+
+Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Vec2 point) {
+  const Vec2 field = field_toward(in.pose, point);
+  if (nav_update(nav, p, rng, -100.0 * dist(in.pose.p, point), in, field)) return follow_edge(in, nav.side);
+  return field;
+}
+
+}  // namespace swarmpath::sim

@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: MIT
+// Reactive motion with an escape from local minima [R]. The paper's robots move by potential
+// fields (toward the nest, away from it while exploring), and a field has local minima in front
+// of obstacles: a robot heading for the nest stops against the near face of a box, an explorer
+// heading away from the nest stops against its far side. When a robot has made no progress for
+// T_trap ticks it follows the obstacle's edge, Bug-style, until it has made 20 cm of progress
+// past where the following began, or T_follow ticks have passed (then it has "given up").
+#pragma once
+
+#include <cstdint>
+
+#include "sim/params.hpp"
+#include "sim/percept.hpp"
+#include "sim/rng.hpp"
+
+namespace swarmpath::sim {
+
+struct NavMemory {
+  double best = -1e18;          ///< best progress since it last improved [cm]
+  std::int64_t stalled = 0;     ///< ticks since progress last improved by 5 cm
+  std::int64_t following = 0;   ///< ticks left of edge following (0: not following)
+  double follow_from = 0;       ///< progress when the following began [cm]
+  std::int8_t side = 0;         ///< obstacle kept on the right (+1) or the left (-1); 0: not chosen
+  std::int64_t off_edge = 0;    ///< ticks of the current following without any proximity reading
+  bool gave_up = false;         ///< a following ran out without progress
+};
+
+/// Clears the progress record (call when the robot starts on a new leg); keeps the side so that
+/// consecutive followings alternate.
+void nav_reset(NavMemory& nav);
+
+/// Books this tick's progress (larger is better, cm: minus the distance to a point, or the
+/// distance from the nest while exploring) and starts or ends edge following. Following starts
+/// only against an obstacle the proximity ring senses; it ends once the robot has made progress
+/// past where it began AND the sensors facing `wanted` (robot frame, the field's direction) read
+/// nothing, or when the edge has been out of range for 100 ticks. A following that runs out
+/// flips the side for the next. Returns whether the robot should follow an edge this tick.
+bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, const Percept& in, Vec2 wanted);
+
+/// Robot-frame unit direction along the sensed obstacle's edge, keeping it on `side` (+1 right,
+/// -1 left) at about 4 cm; with nothing in range, a curve toward that side to round a corner.
+Vec2 follow_edge(const Percept& in, int side);
+
+/// Toward `point` (global, m): the potential field, or the edge while following.
+Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Vec2 point);
+
+}  // namespace swarmpath::sim

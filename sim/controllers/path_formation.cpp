@@ -1,0 +1,505 @@
+// SPDX-License-Identifier: MIT
+#include "path_formation.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "alignment.hpp"
+#include "navigation.hpp"
+#include "sim/controller.hpp"
+#include "sim/motion.hpp"
+
+namespace swarmpath::sim {
+
+std::string_view to_string(PfState s) {
+  switch (s) {
+    case PfState::kExploring:
+      return "exploring";
+    case PfState::kReturnToNest:
+      return "return_to_nest";
+    case PfState::kResting:
+      return "resting";
+    case PfState::kSubgoalForming:
+      return "subgoal_forming";
+    case PfState::kSubgoal:
+      return "subgoal";
+    case PfState::kOpt1:
+      return "opt1";
+    case PfState::kSubNest:
+      return "sub_nest";
+    case PfState::kOpt2:
+      return "opt2";
+    case PfState::kPathDone:
+      return "path_done";
+    case PfState::kRecovery:
+      return "recovery";
+  }
+  return "?";
+}
+
+Led led_of(PfState s) {
+  switch (s) {
+    case PfState::kExploring:
+      return Led::kGreen;
+    case PfState::kReturnToNest:
+      return Led::kGray50;
+    case PfState::kResting:
+      return Led::kBlack;
+    case PfState::kSubgoalForming:
+      return Led::kWhite;
+    case PfState::kSubgoal:
+      return Led::kRed;
+    case PfState::kOpt1:
+      return Led::kMagenta;
+    case PfState::kSubNest:
+      return Led::kBlue;
+    case PfState::kOpt2:
+      return Led::kPurple;
+    case PfState::kPathDone:
+      return Led::kBrown;
+    case PfState::kRecovery:
+      return Led::kOrange;
+  }
+  return Led::kBlack;
+}
+
+void pf_init(PfMemory& m, const Params& p) {
+  m = PfMemory{};
+  m.t_explore = p.t_explore0;
+}
+
+namespace {
+
+constexpr double kCm = 0.01;  // metres per cm
+
+Vec2 blob_position(const Pose& pose, const Blob& b) {
+  return pose.p + (b.distance_cm * kCm) * pose.to_world(unit(b.bearing));
+}
+
+// robots an explorer keeps clear of besides recovery robots (SPEC §2.3, paper label e)
+bool is_path_colour(Led c) {
+  return c == Led::kWhite || c == Led::kMagenta || c == Led::kBlue || c == Led::kPurple || c == Led::kBrown ||
+         c == Led::kOrange;
+}
+
+// colours a reference may show, for vision-only tracking
+bool allowed_for(const Tracked& t, Led c, bool nest_side) {
+  if (t.id == kGoalEmitter) return c == Led::kYellow;
+  if (t.id == kNestEmitter) return false;  // beacons are matched by emitter below
+  if (nest_side) return c == Led::kBlue || c == Led::kMagenta || c == Led::kPurple || c == Led::kBrown;
+  return c == Led::kRed || c == Led::kMagenta || c == Led::kBlue || c == Led::kPurple || c == Led::kBrown ||
+         c == Led::kWhite;
+}
+
+// Updates one tracked reference from the blobs: by emitter id (vision + ID), or by the nearest
+// blob of an allowed colour within the gate around its last position (vision only).
+void track(Tracked& t, const Percept& in, const Params& p, bool nest_side) {
+  if (!t.valid()) return;
+  const Blob* seen = nullptr;
+  const bool beacon = t.id == kNestEmitter || t.id == kGoalEmitter;
+  if (beacon || p.neighbour_id == NeighbourId::kVisionId) {
+    for (const Blob& b : in.blobs) {
+      if (b.emitter == t.id) {
+        seen = &b;
+        break;
+      }
+    }
+  } else {
+    double best = p.track_gate * kCm;
+    for (const Blob& b : in.blobs) {
+      if (!allowed_for(t, b.color, nest_side)) continue;
+      const double d = dist(blob_position(in.pose, b), t.last_seen);
+      if (d <= best) {
+        best = d;
+        seen = &b;
+      }
+    }
+  }
+  t.visible = seen != nullptr;
+  if (seen == nullptr) {
+    ++t.unseen;
+    return;
+  }
+  t.unseen = 0;
+  t.id = seen->emitter;
+  t.color = seen->color;
+  t.last_seen = blob_position(in.pose, *seen);
+}
+
+Tracked follow(const Blob& b, const Pose& pose) {
+  Tracked t;
+  t.id = b.emitter;
+  t.last_seen = blob_position(pose, b);
+  t.visible = true;
+  t.color = b.color;
+  return t;
+}
+
+bool lost(const Tracked& t, const Params& p) { return !t.valid() || t.unseen >= static_cast<int>(p.t_lost); }
+
+// robot-frame position of a reference [cm]
+Vec2 local_cm(const Pose& pose, const Tracked& t) { return (1.0 / kCm) * pose.to_local(t.last_seen - pose.p); }
+
+// ---- guards, named after the paper's conditions ----
+
+bool found_goal_or_subgoal(const PfContext& c) {  // row 1, label c
+  return (c.sight.goal != nullptr && c.sight.goal->distance_cm <= c.p.d_detect) || c.sight.red_near != nullptr;
+}
+
+bool exploration_time_over(const PfContext& c) {  // row 2, label b (or blocked for good)
+  return static_cast<double>(c.m.t_state) >= c.m.t_explore || c.m.explore_blocked;
+}
+
+bool reached_nest(const PfContext& c) {  // row 3, label d
+  return static_cast<double>(c.m.nest_ticks) >= std::max(1.0, c.p.t_nest_search);
+}
+
+bool resting_time_over(const PfContext& c) {  // row 4, label i
+  return static_cast<double>(c.m.t_state) >= c.p.t_rest;
+}
+
+bool found_subgoal_nearer_nest(const PfContext& c) {  // row 5r, label c while forming
+  return c.sight.red_nearer_nest != nullptr;
+}
+
+bool target_at_subgoal_distance(const PfContext& c) {  // row 5
+  return c.m.target_reached && c.m.target.visible && dist(c.in.pose.p, c.m.target.last_seen) / kCm >= c.p.d_sub;
+}
+
+bool reached_nest_before_d_sub(const PfContext& c) {  // row 6a
+  return c.sight.nest_distance_cm <= c.p.d_detect;
+}
+
+bool entered_recovery_range(const PfContext& c) {  // row 6b
+  return c.p.early_stop_in_rec && c.sight.recovery_near && c.m.target.visible;
+}
+
+bool target_lost_in_visible_range(const PfContext& c) {  // row 7, label f
+  return lost(c.m.target, c.p) && dist(c.in.pose.p, c.m.target.last_seen) / kCm >= c.p.r_vis;
+}
+
+bool forming_timeout(const PfContext& c) {  // row 8
+  return static_cast<double>(c.m.t_state) >= c.p.t_form_timeout;
+}
+
+bool forming_timeout_target_seen(const PfContext& c) {  // row 8a
+  return forming_timeout(c) && c.m.target.visible;
+}
+
+bool sees_nest(const PfContext& c) { return c.sight.nest != nullptr; }  // row 9a, label g
+
+bool sees_own_sub_nest(const PfContext& c) { return c.sight.my_subnest != nullptr; }  // row 9b, label g
+
+bool alignment_done(const PfContext& c) {  // rows 10 and 12
+  const bool both_seen = c.m.parent.visible && c.m.child.visible;
+  // out of time: done, provided both references are in view (else first back to the start)
+  if (static_cast<double>(c.m.t_state) >= c.p.t_align_max && both_seen) return true;
+  if (lost(c.m.parent, c.p) || lost(c.m.child, c.p)) return false;
+  // as aligned as the view allows: a reference slipped out of sight; back at the start, both in view
+  if (c.m.view_limited && c.m.parent.visible && c.m.child.visible && dist(c.in.pose.p, c.m.safe_pos) <= 0.02) {
+    return true;
+  }
+  const Vec2 a = local_cm(c.in.pose, c.m.parent);
+  const Vec2 b = local_cm(c.in.pose, c.m.child);
+  return aligned(angle_of(a), angle_of(b), alignment_target(a, b, c.p), c.p);
+}
+
+bool parent_done_or_last_subgoal(const PfContext& c) {  // row 11, label h
+  return c.m.parent.id == kGoalEmitter || (c.m.parent.visible && c.m.parent.color == Led::kBrown);
+}
+
+bool reference_lost(const PfContext& c) {  // row 13, label f
+  // a reference that slipped behind an obstacle while the robot moved counts as lost only once
+  // the robot is back where it last saw both and it is still out of sight
+  const bool back = !c.m.view_limited || dist(c.in.pose.p, c.m.safe_pos) <= 0.02;
+  return (lost(c.m.parent, c.p) || lost(c.m.child, c.p)) && back;
+}
+
+bool orphaned(const PfContext& c) {  // row 14 option: revert_orphans
+  return c.p.revert_orphans && lost(c.m.parent, c.p);
+}
+
+// ---- actions ----
+
+void take_target(const PfContext& c, PfMemory& m) {  // row 1: the goal if in range, else the red subgoal
+  const bool goal = c.sight.goal != nullptr && c.sight.goal->distance_cm <= c.p.d_detect;
+  m.target = follow(goal ? *c.sight.goal : *c.sight.red_near, c.in.pose);
+  m.target_reached = true;  // found within d_detect
+  m.parent = Tracked{};
+  m.child = Tracked{};
+}
+
+void target_becomes_parent(const PfContext&, PfMemory& m) { m.parent = m.target; }
+
+void retarget(const PfContext& c, PfMemory& m) {
+  m.target = follow(*c.sight.red_nearer_nest, c.in.pose);
+  m.target_reached = c.sight.red_nearer_nest->distance_cm <= c.p.d_detect;  // else walk to it first
+}
+
+void grow_budget(const PfContext& c, PfMemory& m) {  // row 4: "increase the minimum exploring time"
+  m.t_explore = std::min((m.t_explore + c.p.dt_explore) * c.p.g_explore, c.p.t_explore_max);
+}
+
+void child_is_nest(const PfContext& c, PfMemory& m) { m.child = follow(*c.sight.nest, c.in.pose); }
+
+void child_is_sub_nest(const PfContext& c, PfMemory& m) { m.child = follow(*c.sight.my_subnest, c.in.pose); }
+
+// clang-format off
+// SPEC §2.3, in its order (paper Table 2 labels where they exist). For each state the first row
+// whose guard holds fires; rows 6, 8, 9 and 13 are split where the SPEC lists two conditions.
+const std::array<PfTransition, 20> kTable{{
+  {PfState::kExploring,      found_goal_or_subgoal,        PfState::kSubgoalForming, take_target,           "#1",  "c"},
+  {PfState::kExploring,      exploration_time_over,        PfState::kReturnToNest,   nullptr,               "#2",  "b"},
+  {PfState::kReturnToNest,   reached_nest,                 PfState::kResting,        nullptr,               "#3",  "d"},
+  {PfState::kResting,        resting_time_over,            PfState::kExploring,      grow_budget,           "#4",  "i"},
+  {PfState::kSubgoalForming, found_subgoal_nearer_nest,    PfState::kSubgoalForming, retarget,              "#5r", "c"},
+  {PfState::kSubgoalForming, target_at_subgoal_distance,   PfState::kSubgoal,        target_becomes_parent, "#5",  ""},
+  {PfState::kSubgoalForming, reached_nest_before_d_sub,    PfState::kSubgoal,        target_becomes_parent, "#6a", ""},
+  {PfState::kSubgoalForming, entered_recovery_range,       PfState::kSubgoal,        target_becomes_parent, "#6b", ""},
+  {PfState::kSubgoalForming, target_lost_in_visible_range, PfState::kRecovery,       nullptr,               "#7",  "f"},
+  {PfState::kSubgoalForming, forming_timeout_target_seen,  PfState::kSubgoal,        target_becomes_parent, "#8a", ""},
+  {PfState::kSubgoalForming, forming_timeout,              PfState::kRecovery,       nullptr,               "#8b", ""},
+  {PfState::kSubgoal,        sees_nest,                    PfState::kOpt1,           child_is_nest,         "#9a", "g"},
+  {PfState::kSubgoal,        sees_own_sub_nest,            PfState::kOpt1,           child_is_sub_nest,     "#9b", "g"},
+  {PfState::kOpt1,           alignment_done,               PfState::kSubNest,        nullptr,               "#10", ""},
+  {PfState::kSubNest,        parent_done_or_last_subgoal,  PfState::kOpt2,           nullptr,               "#11", "h"},
+  {PfState::kOpt2,           alignment_done,               PfState::kPathDone,       nullptr,               "#12", "a"},
+  {PfState::kOpt1,           reference_lost,               PfState::kRecovery,       nullptr,               "#13a","f"},
+  {PfState::kOpt2,           reference_lost,               PfState::kRecovery,       nullptr,               "#13b","f"},
+  {PfState::kSubNest,        orphaned,                     PfState::kSubgoal,        nullptr,               "#14a",""},
+  {PfState::kPathDone,       orphaned,                     PfState::kSubgoal,        nullptr,               "#14b",""},
+}};
+// clang-format on
+
+// ---- behaviours, one per state ----
+
+Command drive(const Params& p, RobotMemory& mem, Vec2 v_cm_s, PfState s) {
+  const WheelSpeeds w = wheels_from_vector(v_cm_s, p, mem.turn);
+  Command cmd;
+  cmd.left_cm_s = w.left_cm_s;
+  cmd.right_cm_s = w.right_cm_s;
+  cmd.led = led_of(s);
+  return cmd;
+}
+
+Command stop(PfState s) {
+  Command cmd;
+  cmd.led = led_of(s);
+  return cmd;
+}
+
+// V = v_max (D + w_away F_away(nest) + w_rw u_phi + R), or the obstacle's edge when the robot
+// can get no farther from the nest; an explorer whose edge following gets it nowhere (the arena's
+// boundary, a corner) ends its trip
+Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
+  update_walk_heading(mem.walk_heading, mem.walk_dir, mem.rng, p);
+  if (sight.lure == nullptr &&
+      nav_update(mem.nav, p, mem.rng, sight.nest_distance_cm, in, -field_toward(in.pose, mem.nest))) {
+    return drive(p, mem, p.v_max * follow_edge(in, mem.nav.side), PfState::kExploring);
+  }
+  mem.pf.explore_blocked = mem.nav.gave_up;
+  const Avoidance avoid = diffusion(in.proximity, p);
+  const Vec2 away = -field_toward(in.pose, mem.nest);
+  Vec2 v = avoid.direction + p.w_away * away + p.w_rw * in.pose.to_local(mem.walk_dir) + sight.repulsion;
+  if (sight.lure != nullptr) v += p.w_seek * unit(sight.lure->bearing);
+  v *= p.v_max;
+  return drive(p, mem, v, PfState::kExploring);
+}
+
+// V = v_max (D + F_toward(nest) + R): returning robots and robots forming a subgoal; F is the
+// navigator's direction (the field, or the obstacle's edge when trapped).
+Command go_to_nest(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight, PfState s) {
+  const Avoidance avoid = diffusion(in.proximity, p);
+  const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, mem.nest);
+  Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
+  return drive(p, mem, p.v_max * v, s);
+}
+
+// SUBGOAL_FORMING (LED white): back off toward the nest from the target; a robot that re-targeted
+// to a subgoal nearer the nest first walks to it (the chain's tip), then backs off from there
+Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
+  if (mem.pf.target_reached) return go_to_nest(in, p, mem, sight, PfState::kSubgoalForming);
+  const Avoidance avoid = diffusion(in.proximity, p);
+  const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, mem.pf.target.last_seen);
+  const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
+  return drive(p, mem, p.v_max * v, PfState::kSubgoalForming);
+}
+
+// SPEC §2.4: drive to the alignment target P; speed v_align v_max, tapering over the last
+// centimetres (P in cm, so |P| cm/s reaches it in about a second) so that the robot stops on P.
+Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
+  PfMemory& m = mem.pf;
+  const Vec2 a = local_cm(in.pose, m.parent);
+  const Vec2 b = local_cm(in.pose, m.child);
+  // keep both references in view: where one slips behind an obstacle, go back to where the
+  // alignment began (both were in view there) and stay (SPEC §2.4, bounded by line of sight)
+  if (!m.parent.visible || !m.child.visible || static_cast<double>(m.t_state) >= p.t_align_max) {
+    m.view_limited = true;
+  }
+  const Vec2 target = m.view_limited ? (1.0 / kCm) * in.pose.to_local(m.safe_pos - in.pose.p) : alignment_target(a, b, p);
+  const double len = norm(target);
+  if (len <= p.d_tol) return stop(s);
+  const Avoidance avoid = diffusion(in.proximity, p);
+  const double speed = std::min(p.v_align * p.v_max, len);
+  Vec2 v = (1.0 / len) * target;
+  // R_keep bounds the robot itself, not only P: pushed past it, go back toward that reference
+  if (norm(a) > p.r_keep) {
+    v = (1.0 / norm(a)) * a;
+  } else if (norm(b) > p.r_keep) {
+    v = (1.0 / norm(b)) * b;
+  }
+  if (avoid.collision) v += avoid.direction;  // avoidance at the same (slow) speed as the pull
+  return drive(p, mem, speed * v, s);
+}
+
+}  // namespace
+
+std::span<const PfTransition> pf_transitions() { return kTable; }
+
+void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfSight& sight) {
+  sight = PfSight{};
+  sight.nest_distance_cm = dist(in.pose.p, nest) / kCm;
+  double red_best = p.d_detect;
+  double lure_best = p.r_vis + 1.0;
+  double sub_best = p.r_vis + 1.0;
+  for (const Blob& b : in.blobs) {
+    if (b.emitter == kGoalEmitter) {
+      sight.goal = &b;
+      sight.lure = &b;
+      lure_best = -1.0;  // the goal beats any subgoal
+      continue;
+    }
+    if (b.emitter == kNestEmitter) {
+      sight.nest = &b;
+      continue;
+    }
+    if (b.color == Led::kRed && b.distance_cm <= red_best) {
+      red_best = b.distance_cm;
+      sight.red_near = &b;
+    }
+    if (b.color == Led::kRed && b.distance_cm < lure_best) {
+      lure_best = b.distance_cm;
+      sight.lure = &b;
+    }
+    const bool mine = p.neighbour_id == NeighbourId::kVisionId ? b.tag == in.id : b.emitter != m.parent.id;
+    if (b.color == Led::kBlue && mine && b.distance_cm < sub_best) {
+      sub_best = b.distance_cm;
+      sight.my_subnest = &b;
+    }
+    // R: recovery robots repel everyone; explorers keep clear of path robots too (label e)
+    const bool repels = b.color == Led::kOrange || (m.state == PfState::kExploring && is_path_colour(b.color));
+    if (repels && b.distance_cm <= p.r_rec) {
+      sight.repulsion -= p.k_rec * (1.0 - b.distance_cm / p.r_rec) * unit(b.bearing);
+      if (b.color == Led::kOrange) sight.recovery_near = true;
+    }
+  }
+  track(m.target, in, p, false);
+  track(m.parent, in, p, false);
+  track(m.child, in, p, true);
+  if (m.target.visible && dist(in.pose.p, m.target.last_seen) / kCm <= p.d_detect) m.target_reached = true;
+  // site fidelity: remember where the chain needs robots: the RED subgoal in view nearest the
+  // nest (its tip), or else the goal
+  bool seen = false;
+  double tip_to_nest = 1e18;
+  for (const Blob& b : in.blobs) {
+    if (b.color != Led::kRed) continue;
+    const Vec2 at = blob_position(in.pose, b);
+    if (dist(at, nest) < tip_to_nest) {
+      tip_to_nest = dist(at, nest);
+      m.sighting = at;
+      seen = true;
+    }
+  }
+  if (!seen && sight.goal != nullptr) {
+    m.sighting = blob_position(in.pose, *sight.goal);
+    seen = true;
+  }
+  if (seen) {
+    m.has_sighting = true;
+    m.sighted_this_trip = true;
+  }
+  // while forming: the RED subgoal in view that lies nearest the nest, if it is nearer than the
+  // target (the chain's tip, so that the new subgoal extends it)
+  if (m.state == PfState::kSubgoalForming && m.target.valid()) {
+    constexpr double kMargin = 0.2;  // [m]
+    double best = dist(m.target.last_seen, nest) - kMargin;
+    for (const Blob& b : in.blobs) {
+      if (b.color != Led::kRed || b.emitter == m.target.id) continue;
+      const double to_nest = dist(blob_position(in.pose, b), nest);
+      if (to_nest < best) {
+        best = to_nest;
+        sight.red_nearer_nest = &b;
+      }
+    }
+  }
+  m.nest_ticks = (m.state == PfState::kReturnToNest && sight.nest_distance_cm <= p.r_nest_reach) ? m.nest_ticks + 1 : 0;
+}
+
+const PfTransition* pf_transition(const PfContext& c, PfMemory& m) {
+  for (std::size_t i = 0; i < kTable.size(); ++i) {
+    const PfTransition& row = kTable[i];
+    if (row.from != m.state || !row.when(c)) continue;
+    if (row.act != nullptr) row.act(c, m);
+    m.state = row.to;
+    m.t_state = 0;
+    m.last_row = static_cast<std::uint8_t>(i + 1);
+    m.fired_tick = c.in.tick;
+    return &row;
+  }
+  return nullptr;
+}
+
+Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem) {
+  PfMemory& m = mem.pf;
+  PfSight sight;
+  pf_perceive(in, p, mem.nest, m, sight);
+  // transitions happen only here, via the table
+  const PfContext c{in, p, m, sight, mem.nest};
+  if (const PfTransition* fired = pf_transition(c, m)) {
+    nav_reset(mem.nav);
+    m.explore_blocked = false;
+    m.view_limited = false;
+    m.safe_pos = in.pose.p;
+    if (fired->to == PfState::kReturnToNest && !m.sighted_this_trip) m.has_sighting = false;  // a stale lead
+    if (fired->to == PfState::kExploring) {
+      // a new trip: head for the last sighting (site fidelity), else keep the random heading
+      m.sighted_this_trip = false;
+      if (p.site_fidelity && m.has_sighting) {
+        mem.walk_heading = angle_of(m.sighting - in.pose.p);
+        mem.walk_dir = unit(mem.walk_heading);
+      }
+    }
+  }
+  ++m.t_state;
+  mem.state = static_cast<std::uint8_t>(m.state);
+
+  Command cmd;
+  switch (m.state) {
+    case PfState::kExploring:
+      cmd = explore(in, p, mem, sight);
+      break;
+    case PfState::kReturnToNest:
+      cmd = go_to_nest(in, p, mem, sight, m.state);
+      break;
+    case PfState::kSubgoalForming:
+      cmd = form_subgoal(in, p, mem, sight);
+      break;
+    case PfState::kOpt1:
+    case PfState::kOpt2:
+      cmd = align(in, p, mem, m.state);
+      break;
+    case PfState::kResting:
+    case PfState::kSubgoal:
+    case PfState::kSubNest:
+    case PfState::kPathDone:
+    case PfState::kRecovery:
+      cmd = stop(m.state);
+      break;
+  }
+  // vision + ID: the light also carries the robot's parent (SPEC §2.1), so that a subgoal can
+  // tell which sub-nest is its own (row 9b)
+  cmd.tag = m.parent.valid() ? m.parent.id : kNobody;
+  return cmd;
+}
+
+}  // namespace swarmpath::sim
