@@ -44,7 +44,8 @@ int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
   const sim::Mode mode = mode_from_option(o.mode);
   const sim::Params p = params_or_defaults(o.params);
   std::vector<sim::Scenario> scenarios;
-  for (const std::string& f : scenario_files(o.scenarios)) scenarios.push_back(scenario_with_overrides(f, {}, o.ticks));
+  for (const std::string& f : scenario_files(o.scenarios))
+    scenarios.push_back(scenario_with_overrides(f, {}, o.ticks));
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
   if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
 
@@ -63,8 +64,8 @@ int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
     const double t = clock.seconds();
     const double eta = done > 0 ? t * static_cast<double>(total - done) / static_cast<double>(done) : 0.0;
     if (tty) {
-      err << "\r  " << done << " / " << total << " runs, " << fixed(t, 0) << " s, ETA " << fixed(eta, 0) << " s   "
-          << std::flush;
+      err << "\r  " << done << " / " << total << " runs, " << fixed(t, 0) << " s, ETA " << fixed(eta, 0)
+          << " s   " << std::flush;
     } else if (done == total || done >= last_line + std::max<std::size_t>(1, total / 10)) {
       last_line = done;
       err << "  " << done << " / " << total << " runs, " << fixed(t, 0) << " s\n";
@@ -95,8 +96,11 @@ int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
 
 Runner add_table(CLI::App& app) {
   auto o = std::make_shared<TableOptions>();
-  app.add_option("--scenarios", o->scenarios, "Scenario files or directories of *.toml")->capture_default_str();
-  app.add_option("--robots", o->robots, "Robot counts, e.g. 60,70,80,90,100")->delimiter(',')->capture_default_str();
+  app.add_option("--scenarios", o->scenarios, "Scenario files or directories of *.toml")
+      ->capture_default_str();
+  app.add_option("--robots", o->robots, "Robot counts, e.g. 60,70,80,90,100")
+      ->delimiter(',')
+      ->capture_default_str();
   app.add_option("--seeds", o->seeds, "Seeds per (scenario, robots) case")->capture_default_str();
   app.add_option("--seed-base", o->seed_base, "The first seed; a case uses seed-base ... seed-base+seeds-1")
       ->capture_default_str();

@@ -24,7 +24,8 @@ std::vector<GridCase> make_grid(std::size_t scenarios, const std::vector<int>& r
 }
 
 std::vector<GridRun> run_grid(const std::vector<sim::Scenario>& scenarios, const std::vector<GridCase>& grid,
-                              const sim::Params& p, sim::Mode mode, int threads, const GridProgress& progress) {
+                              const sim::Params& p, sim::Mode mode, int threads,
+                              const GridProgress& progress) {
   // validate the robot counts first, so that errors come out before any work
   std::vector<sim::Scenario> cases;
   cases.reserve(grid.size());

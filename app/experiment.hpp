@@ -36,7 +36,8 @@ using GridProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 /// Runs the grid on `threads` threads; results in grid order.
 std::vector<GridRun> run_grid(const std::vector<sim::Scenario>& scenarios, const std::vector<GridCase>& grid,
-                              const sim::Params& p, sim::Mode mode, int threads, const GridProgress& progress);
+                              const sim::Params& p, sim::Mode mode, int threads,
+                              const GridProgress& progress);
 
 /// Scenario files: each path as given, or for a directory every *.toml in it, sorted by name.
 std::vector<std::string> scenario_files(const std::vector<std::string>& paths);

@@ -23,7 +23,9 @@ double mean_of(const std::vector<double>& v) {
   return s / static_cast<double>(v.size());
 }
 
-nlohmann::json number_or_null(double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); }
+nlohmann::json number_or_null(double v) {
+  return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v);
+}
 
 std::string cell(double v, int digits) { return std::isnan(v) ? "-" : fixed(v, digits); }
 
@@ -101,8 +103,9 @@ TableReport summarise(const std::vector<sim::Scenario>& scenarios, const std::ve
   return r;
 }
 
-nlohmann::ordered_json table_json(const std::vector<sim::Scenario>& scenarios, const std::vector<double>& astar8_tu,
-                                  const std::vector<GridRun>& runs, const TableReport& report) {
+nlohmann::ordered_json table_json(const std::vector<sim::Scenario>& scenarios,
+                                  const std::vector<double>& astar8_tu, const std::vector<GridRun>& runs,
+                                  const TableReport& report) {
   nlohmann::ordered_json j;
   j["mode"] = report.mode;
   j["table_unit_cm"] = 10;
@@ -157,12 +160,14 @@ nlohmann::ordered_json table_json(const std::vector<sim::Scenario>& scenarios, c
                   {"mean_ratio_to_astar", number_or_null(report.mean_ratio_to_astar)},
                   {"min_ratio_to_astar", number_or_null(report.min_ratio_to_astar)},
                   {"max_ratio_to_astar", number_or_null(report.max_ratio_to_astar)}};
-  j["paper"] = {{"success_rate_pf", kPaperSuccessRatePf}, {"pct_pf_shorter_than_astar", kPaperPctPfShorterThanAstar}};
+  j["paper"] = {{"success_rate_pf", kPaperSuccessRatePf},
+                {"pct_pf_shorter_than_astar", kPaperPctPfShorterThanAstar}};
   return j;
 }
 
 void write_runs_csv(std::ostream& out, const std::vector<sim::Scenario>& scenarios,
-                    const std::vector<double>& astar8_tu, const std::vector<GridRun>& runs, const std::string& mode) {
+                    const std::vector<double>& astar8_tu, const std::vector<GridRun>& runs,
+                    const std::string& mode) {
   out << "scenario,robots,seed,mode,success,ticks_to_form,path_length_tu,subgoal_path_length_tu,"
          "opt1_path_length_tu,astar8_tu,path_robots,ticks_to_chain,ticks_to_opt1,ticks,state_hash\n";
   const auto num = [](double v) { return std::isnan(v) ? std::string() : fixed(v, 4); };
@@ -178,7 +183,8 @@ void write_runs_csv(std::ostream& out, const std::vector<sim::Scenario>& scenari
 }
 
 void write_markdown(std::ostream& out, const TableReport& r) {
-  out << "| Env | class | success | time without TA (ticks) | A* length (TU) | path without TA (TU) | path / A* |\n";
+  out << "| Env | class | success | time without TA (ticks) | A* length (TU) | path without TA (TU) | path / "
+         "A* |\n";
   out << "|---|---|---|---|---|---|---|\n";
   for (const EnvSummary& e : r.envs) {
     const auto pair = [&](const std::string& ours, const std::optional<std::string>& paper) {
@@ -196,8 +202,8 @@ void write_markdown(std::ostream& out, const TableReport& r) {
         << pair(cell(e.path_length_tu, 1), pp) << " | " << pair(cell(e.ratio_to_astar, 2), pr) << " |\n";
   }
   out << "\n";
-  out << "- success rate without TA: " << fixed(r.success_rate_pf, 1) << " % of " << r.runs << " runs (paper: "
-      << fixed(kPaperSuccessRatePf, 0) << " % of 40 cases)\n";
+  out << "- success rate without TA: " << fixed(r.success_rate_pf, 1) << " % of " << r.runs
+      << " runs (paper: " << fixed(kPaperSuccessRatePf, 0) << " % of 40 cases)\n";
   out << "- cases whose mean path is shorter than A*: " << fixed(r.pct_pf_shorter_than_astar, 1) << " % of "
       << r.cases.size() << " (paper: " << fixed(kPaperPctPfShorterThanAstar, 0) << " %)\n";
   out << "- path / A* over the cases: mean " << cell(r.mean_ratio_to_astar, 3) << ", range "

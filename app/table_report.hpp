@@ -28,7 +28,7 @@ struct CaseSummary {
   double opt1_length_tu = 0;     ///< mean optimisation-1 path length
   double path_robots = 0;
   double astar8_tu = 0;
-  double ratio_to_astar = 0;     ///< path_length_tu / astar8_tu
+  double ratio_to_astar = 0;  ///< path_length_tu / astar8_tu
 };
 
 /// One row of the paper's table: one environment, averaged over its robot counts.
@@ -48,9 +48,9 @@ struct TableReport {
   std::vector<CaseSummary> cases;
   std::vector<EnvSummary> envs;
   int runs = 0;
-  double success_rate_pf = 0;             ///< % of runs whose path completed
-  double pct_pf_shorter_than_astar = 0;   ///< % of cases whose mean path is shorter than A* (SPEC §4.6)
-  double mean_ratio_to_astar = 0;         ///< mean of the cases' path / A*
+  double success_rate_pf = 0;            ///< % of runs whose path completed
+  double pct_pf_shorter_than_astar = 0;  ///< % of cases whose mean path is shorter than A* (SPEC §4.6)
+  double mean_ratio_to_astar = 0;        ///< mean of the cases' path / A*
   double min_ratio_to_astar = 0;
   double max_ratio_to_astar = 0;
 };
@@ -60,12 +60,14 @@ TableReport summarise(const std::vector<sim::Scenario>& scenarios, const std::ve
                       const std::vector<GridRun>& runs, const std::string& mode);
 
 /// {"runs": [...], "cases": [...], "environments": [...], "summary": {...}, "paper": {...}}
-nlohmann::ordered_json table_json(const std::vector<sim::Scenario>& scenarios, const std::vector<double>& astar8_tu,
-                                  const std::vector<GridRun>& runs, const TableReport& report);
+nlohmann::ordered_json table_json(const std::vector<sim::Scenario>& scenarios,
+                                  const std::vector<double>& astar8_tu, const std::vector<GridRun>& runs,
+                                  const TableReport& report);
 
 /// One line per run.
 void write_runs_csv(std::ostream& out, const std::vector<sim::Scenario>& scenarios,
-                    const std::vector<double>& astar8_tu, const std::vector<GridRun>& runs, const std::string& mode);
+                    const std::vector<double>& astar8_tu, const std::vector<GridRun>& runs,
+                    const std::string& mode);
 
 /// The paper's table with our figures beside the paper's (markdown).
 void write_markdown(std::ostream& out, const TableReport& report);

@@ -55,6 +55,7 @@ RobotMemory init_memory(Mode m, int id, const Pose& start, Vec2 nest, const Para
       break;
     case Mode::kPathFormation:
       pf_init(mem.pf, p);
+      mem.trail.reset(start.p);
       mem.state = static_cast<std::uint8_t>(mem.pf.state);
       break;
   }

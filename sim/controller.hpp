@@ -40,6 +40,7 @@ struct RobotMemory {
   Vec2 nest;                        ///< the nest's position, from the positioning frame [m]
   PfMemory pf;                      ///< path formation (Mode::kPathFormation)
   NavMemory nav;                    ///< going to a point (nest, deployment point)
+  Trail trail;                      ///< breadcrumbs of the current exploration trip
 };
 
 SensorNeeds sensor_needs(Mode m);

@@ -53,16 +53,17 @@ PathSnapshot snapshot(const Scenario& s, const World& w, const std::vector<int>&
   snap.points.push_back(s.nest);
   for (const int id : robots) snap.points.push_back(w.positions[static_cast<std::size_t>(id)]);
   snap.points.push_back(s.goal);
-  for (std::size_t i = 1; i < snap.points.size(); ++i) snap.length_m += dist(snap.points[i - 1], snap.points[i]);
+  for (std::size_t i = 1; i < snap.points.size(); ++i)
+    snap.length_m += dist(snap.points[i - 1], snap.points[i]);
   return snap;
 }
 
 void PathObserver::observe(const Scenario& s, const World& w) {
   if (complete()) return;
-  static const std::uint8_t kChainRow = row_number("#9a");   // a subgoal sees the nest
-  static const std::uint8_t kOpt1Row = row_number("#10");    // optimisation 1 done
-  static const std::uint8_t kDoneRow = row_number("#12");    // optimisation 2 done
-  const std::int64_t fired = w.tick - 1;  // rows fired during the tick just simulated
+  static const std::uint8_t kChainRow = row_number("#9a");  // a subgoal sees the nest
+  static const std::uint8_t kOpt1Row = row_number("#10");   // optimisation 1 done
+  static const std::uint8_t kDoneRow = row_number("#12");   // optimisation 2 done
+  const std::int64_t fired = w.tick - 1;                    // rows fired during the tick just simulated
   for (int id = 0; id < w.robot_count(); ++id) {
     const PfMemory& m = w.memory[static_cast<std::size_t>(id)].pf;
     if (m.fired_tick != fired) continue;

@@ -14,10 +14,10 @@ namespace swarmpath::sim {
 
 /// One picture of the chain: nest beacon, robot centres nest -> goal, goal beacon.
 struct PathSnapshot {
-  std::int64_t tick = -1;   ///< -1: never taken
-  std::vector<int> robots;  ///< chain robots, nest side first
-  std::vector<Vec2> points; ///< nest, robots..., goal [m]
-  double length_m = 0;      ///< polyline length of `points`
+  std::int64_t tick = -1;    ///< -1: never taken
+  std::vector<int> robots;   ///< chain robots, nest side first
+  std::vector<Vec2> points;  ///< nest, robots..., goal [m]
+  double length_m = 0;       ///< polyline length of `points`
 };
 
 /// The robots from `first` (the nest-side subgoal) up its parent pointers to the goal, or an
@@ -50,6 +50,7 @@ class PathObserver {
     int first;  // the nest-side robot of the chain
     PathSnapshot snap;
   };
+
   std::vector<Candidate> chains_;  // T_chain snapshots, one per chain that reached the nest
   std::vector<Candidate> opt1s_;   // T_opt1 snapshots
   PathSnapshot subgoal_;

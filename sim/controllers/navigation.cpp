@@ -14,10 +14,11 @@ void nav_reset(NavMemory& nav) {
   nav.side = side;
 }
 
-bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, const Percept& in, Vec2 wanted) {
-  constexpr double kProgress = 5.0;         // cm that count as progress
-  constexpr double kLeave = 20.0;           // cm past the start of a following that end it
-  constexpr std::int64_t kEdgeLost = 100;   // ticks without a reading that end it
+bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, const Percept& in,
+                Vec2 wanted) {
+  constexpr double kProgress = 5.0;        // cm that count as progress
+  constexpr double kLeave = 20.0;          // cm past the start of a following that end it
+  constexpr std::int64_t kEdgeLost = 100;  // ticks without a reading that end it
   const auto& dirs = proximity_directions();
   bool touching = false;
   bool way_free = true;  // nothing sensed within 60 degrees of the wanted direction
@@ -63,6 +64,25 @@ Vec2 follow_edge(const Percept& in, int side) {
   const Vec2 tangent = side > 0 ? Vec2{away.y, -away.x} : Vec2{-away.y, away.x};  // away turned -/+90 deg
   const Vec2 v = tangent + (mag - kSetPoint) * away;
   return (1.0 / norm(v)) * v;
+}
+
+Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest) {
+  // trapped by the field with a trail to retrace: switch to the trail for the rest of the way
+  if (!nav.on_trail && nav.following == 0 && !trail.empty() && p.t_trap > 0 &&
+      static_cast<double>(nav.stalled) >= p.t_trap) {
+    nav.on_trail = true;
+    trail.start_home(in.pose.p);
+    nav.stalled = 0;
+    nav.best = -1e18;
+  }
+  if (!nav.on_trail) return nav_toward(in, p, nav, rng, nest);
+  Vec2 crumb = nest;
+  const bool more = trail.next_home(in.pose.p, crumb);
+  // progress along the trail: minus what is left of it (then of the last leg to the nest)
+  const double left = more ? trail.remaining(in.pose.p) : dist(in.pose.p, nest);
+  const Vec2 field = field_toward(in.pose, crumb);
+  if (nav_update(nav, p, rng, -100.0 * left, in, field)) return follow_edge(in, nav.side);
+  return field;
 }
 
 Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Vec2 point) {

@@ -12,17 +12,19 @@
 #include "sim/params.hpp"
 #include "sim/percept.hpp"
 #include "sim/rng.hpp"
+#include "trail.hpp"
 
 namespace swarmpath::sim {
 
 struct NavMemory {
-  double best = -1e18;          ///< best progress since it last improved [cm]
-  std::int64_t stalled = 0;     ///< ticks since progress last improved by 5 cm
-  std::int64_t following = 0;   ///< ticks left of edge following (0: not following)
-  double follow_from = 0;       ///< progress when the following began [cm]
-  std::int8_t side = 0;         ///< obstacle kept on the right (+1) or the left (-1); 0: not chosen
-  std::int64_t off_edge = 0;    ///< ticks of the current following without any proximity reading
-  bool gave_up = false;         ///< a following ran out without progress
+  double best = -1e18;         ///< best progress since it last improved [cm]
+  std::int64_t stalled = 0;    ///< ticks since progress last improved by 5 cm
+  std::int64_t following = 0;  ///< ticks left of edge following (0: not following)
+  double follow_from = 0;      ///< progress when the following began [cm]
+  std::int8_t side = 0;        ///< obstacle kept on the right (+1) or the left (-1); 0: not chosen
+  std::int64_t off_edge = 0;   ///< ticks of the current following without any proximity reading
+  bool gave_up = false;        ///< a following ran out without progress
+  bool on_trail = false;       ///< going home along the breadcrumbs
 };
 
 /// Clears the progress record (call when the robot starts on a new leg); keeps the side so that
@@ -35,7 +37,8 @@ void nav_reset(NavMemory& nav);
 /// past where it began AND the sensors facing `wanted` (robot frame, the field's direction) read
 /// nothing, or when the edge has been out of range for 100 ticks. A following that runs out
 /// flips the side for the next. Returns whether the robot should follow an edge this tick.
-bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, const Percept& in, Vec2 wanted);
+bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, const Percept& in,
+                Vec2 wanted);
 
 /// Robot-frame unit direction along the sensed obstacle's edge, keeping it on `side` (+1 right,
 /// -1 left) at about 4 cm; with nothing in range, a curve toward that side to round a corner.
@@ -43,5 +46,9 @@ Vec2 follow_edge(const Percept& in, int side);
 
 /// Toward `point` (global, m): the potential field, or the edge while following.
 Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Vec2 point);
+
+/// Toward the nest: the potential field; once the field has trapped the robot, its breadcrumb
+/// trail (when it has one); the edge while following.
+Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest);
 
 }  // namespace swarmpath::sim

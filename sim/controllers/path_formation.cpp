@@ -138,12 +138,15 @@ Tracked follow(const Blob& b, const Pose& pose) {
 bool lost(const Tracked& t, const Params& p) { return !t.valid() || t.unseen >= static_cast<int>(p.t_lost); }
 
 // robot-frame position of a reference [cm]
-Vec2 local_cm(const Pose& pose, const Tracked& t) { return (1.0 / kCm) * pose.to_local(t.last_seen - pose.p); }
+Vec2 local_cm(const Pose& pose, const Tracked& t) {
+  return (1.0 / kCm) * pose.to_local(t.last_seen - pose.p);
+}
 
 // ---- guards, named after the paper's conditions ----
 
 bool found_goal_or_subgoal(const PfContext& c) {  // row 1, label c
-  return (c.sight.goal != nullptr && c.sight.goal->distance_cm <= c.p.d_detect) || c.sight.red_near != nullptr;
+  return (c.sight.goal != nullptr && c.sight.goal->distance_cm <= c.p.d_detect) ||
+         c.sight.red_near != nullptr;
 }
 
 bool exploration_time_over(const PfContext& c) {  // row 2, label b (or blocked for good)
@@ -158,12 +161,19 @@ bool resting_time_over(const PfContext& c) {  // row 4, label i
   return static_cast<double>(c.m.t_state) >= c.p.t_rest;
 }
 
+bool nestward_of_target(const PfContext& c, Vec2 at) {
+  return c.on_trail || dist(at, c.nest) < dist(c.m.target.last_seen, c.nest);
+}
+
 bool found_subgoal_nearer_nest(const PfContext& c) {  // row 5r, label c while forming
   return c.sight.red_nearer_nest != nullptr;
 }
 
 bool target_at_subgoal_distance(const PfContext& c) {  // row 5
-  return c.m.target_reached && c.m.target.visible && dist(c.in.pose.p, c.m.target.last_seen) / kCm >= c.p.d_sub;
+  // "in between the starting point and the detected subgoal": nearer the nest than the target
+  // (or retracing the robot's own way home, which may wind)
+  return c.m.target_reached && c.m.target.visible && nestward_of_target(c, c.in.pose.p) &&
+         dist(c.in.pose.p, c.m.target.last_seen) / kCm >= c.p.d_sub;
 }
 
 bool reached_nest_before_d_sub(const PfContext& c) {  // row 6a
@@ -171,7 +181,12 @@ bool reached_nest_before_d_sub(const PfContext& c) {  // row 6a
 }
 
 bool entered_recovery_range(const PfContext& c) {  // row 6b
-  return c.p.early_stop_in_rec && c.sight.recovery_near && c.m.target.visible;
+  return c.p.early_stop_in_rec && c.sight.recovery_near && c.m.target.visible && c.m.target_reached &&
+         nestward_of_target(c, c.in.pose.p);
+}
+
+bool back_at_view_edge(const PfContext& c) {  // row 7a [R]
+  return c.m.to_view_edge && dist(c.in.pose.p, c.m.last_saw_target) <= 0.02;
 }
 
 bool target_lost_in_visible_range(const PfContext& c) {  // row 7, label f
@@ -196,7 +211,8 @@ bool alignment_done(const PfContext& c) {  // rows 10 and 12
   if (static_cast<double>(c.m.t_state) >= c.p.t_align_max && both_seen) return true;
   if (lost(c.m.parent, c.p) || lost(c.m.child, c.p)) return false;
   // as aligned as the view allows: a reference slipped out of sight; back at the start, both in view
-  if (c.m.view_limited && c.m.parent.visible && c.m.child.visible && dist(c.in.pose.p, c.m.safe_pos) <= 0.02) {
+  if (c.m.view_limited && c.m.parent.visible && c.m.child.visible &&
+      dist(c.in.pose.p, c.m.safe_pos) <= 0.02) {
     return true;
   }
   const Vec2 a = local_cm(c.in.pose, c.m.parent);
@@ -247,7 +263,7 @@ void child_is_sub_nest(const PfContext& c, PfMemory& m) { m.child = follow(*c.si
 // clang-format off
 // SPEC §2.3, in its order (paper Table 2 labels where they exist). For each state the first row
 // whose guard holds fires; rows 6, 8, 9 and 13 are split where the SPEC lists two conditions.
-const std::array<PfTransition, 20> kTable{{
+const std::array<PfTransition, 21> kTable{{
   {PfState::kExploring,      found_goal_or_subgoal,        PfState::kSubgoalForming, take_target,           "#1",  "c"},
   {PfState::kExploring,      exploration_time_over,        PfState::kReturnToNest,   nullptr,               "#2",  "b"},
   {PfState::kReturnToNest,   reached_nest,                 PfState::kResting,        nullptr,               "#3",  "d"},
@@ -256,6 +272,7 @@ const std::array<PfTransition, 20> kTable{{
   {PfState::kSubgoalForming, target_at_subgoal_distance,   PfState::kSubgoal,        target_becomes_parent, "#5",  ""},
   {PfState::kSubgoalForming, reached_nest_before_d_sub,    PfState::kSubgoal,        target_becomes_parent, "#6a", ""},
   {PfState::kSubgoalForming, entered_recovery_range,       PfState::kSubgoal,        target_becomes_parent, "#6b", ""},
+  {PfState::kSubgoalForming, back_at_view_edge,            PfState::kSubgoal,        target_becomes_parent, "#7a", ""},
   {PfState::kSubgoalForming, target_lost_in_visible_range, PfState::kRecovery,       nullptr,               "#7",  "f"},
   {PfState::kSubgoalForming, forming_timeout_target_seen,  PfState::kSubgoal,        target_becomes_parent, "#8a", ""},
   {PfState::kSubgoalForming, forming_timeout,              PfState::kRecovery,       nullptr,               "#8b", ""},
@@ -269,6 +286,7 @@ const std::array<PfTransition, 20> kTable{{
   {PfState::kSubNest,        orphaned,                     PfState::kSubgoal,        nullptr,               "#14a",""},
   {PfState::kPathDone,       orphaned,                     PfState::kSubgoal,        nullptr,               "#14b",""},
 }};
+
 // clang-format on
 
 // ---- behaviours, one per state ----
@@ -292,7 +310,22 @@ Command stop(PfState s) {
 // can get no farther from the nest; an explorer whose edge following gets it nowhere (the arena's
 // boundary, a corner) ends its trip
 Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
+  mem.trail.record(in.pose.p);
   update_walk_heading(mem.walk_heading, mem.walk_dir, mem.rng, p);
+  // site fidelity: travel back to where the chain was seen, then explore from there
+  PfMemory& m = mem.pf;
+  if (m.to_sighting && (sight.lure != nullptr || dist(in.pose.p, m.sighting) < 0.5)) {
+    m.to_sighting = false;
+    mem.walk_heading = in.pose.yaw();
+    mem.walk_dir = {in.pose.c, in.pose.s};
+    nav_reset(mem.nav);
+  }
+  if (m.to_sighting) {
+    const Avoidance avoid = diffusion(in.proximity, p);
+    const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, m.sighting);
+    const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
+    return drive(p, mem, p.v_max * v, PfState::kExploring);
+  }
   if (sight.lure == nullptr &&
       nav_update(mem.nav, p, mem.rng, sight.nest_distance_cm, in, -field_toward(in.pose, mem.nest))) {
     return drive(p, mem, p.v_max * follow_edge(in, mem.nav.side), PfState::kExploring);
@@ -310,7 +343,7 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
 // navigator's direction (the field, or the obstacle's edge when trapped).
 Command go_to_nest(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight, PfState s) {
   const Avoidance avoid = diffusion(in.proximity, p);
-  const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, mem.nest);
+  const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest);
   Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
   return drive(p, mem, p.v_max * v, s);
 }
@@ -318,7 +351,20 @@ Command go_to_nest(const Percept& in, const Params& p, RobotMemory& mem, const P
 // SUBGOAL_FORMING (LED white): back off toward the nest from the target; a robot that re-targeted
 // to a subgoal nearer the nest first walks to it (the chain's tip), then backs off from there
 Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
-  if (mem.pf.target_reached) return go_to_nest(in, p, mem, sight, PfState::kSubgoalForming);
+  if (mem.pf.to_view_edge) {  // back to where the target was last in view (row 7a)
+    const Vec2 back = (1.0 / kCm) * in.pose.to_local(mem.pf.last_saw_target - in.pose.p);
+    const double len = norm(back);
+    if (len <= 2.0) return stop(PfState::kSubgoalForming);
+    return drive(p, mem, (std::min(p.v_max, len) / len) * back, PfState::kSubgoalForming);
+  }
+  if (mem.pf.target_reached) {
+    // back off along the robot's own way from the nest: a route it knows is passable
+    if (!mem.nav.on_trail && !mem.trail.empty()) {
+      mem.nav.on_trail = true;
+      mem.trail.start_home(in.pose.p);
+    }
+    return go_to_nest(in, p, mem, sight, PfState::kSubgoalForming);
+  }
   const Avoidance avoid = diffusion(in.proximity, p);
   const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, mem.pf.target.last_seen);
   const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
@@ -336,7 +382,8 @@ Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
   if (!m.parent.visible || !m.child.visible || static_cast<double>(m.t_state) >= p.t_align_max) {
     m.view_limited = true;
   }
-  const Vec2 target = m.view_limited ? (1.0 / kCm) * in.pose.to_local(m.safe_pos - in.pose.p) : alignment_target(a, b, p);
+  const Vec2 target =
+      m.view_limited ? (1.0 / kCm) * in.pose.to_local(m.safe_pos - in.pose.p) : alignment_target(a, b, p);
   const double len = norm(target);
   if (len <= p.d_tol) return stop(s);
   const Avoidance avoid = diffusion(in.proximity, p);
@@ -387,7 +434,8 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
       sight.my_subnest = &b;
     }
     // R: recovery robots repel everyone; explorers keep clear of path robots too (label e)
-    const bool repels = b.color == Led::kOrange || (m.state == PfState::kExploring && is_path_colour(b.color));
+    const bool repels =
+        b.color == Led::kOrange || (m.state == PfState::kExploring && is_path_colour(b.color));
     if (repels && b.distance_cm <= p.r_rec) {
       sight.repulsion -= p.k_rec * (1.0 - b.distance_cm / p.r_rec) * unit(b.bearing);
       if (b.color == Led::kOrange) sight.recovery_near = true;
@@ -397,6 +445,17 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   track(m.parent, in, p, false);
   track(m.child, in, p, true);
   if (m.target.visible && dist(in.pose.p, m.target.last_seen) / kCm <= p.d_detect) m.target_reached = true;
+  // forming robots that lose their target at least d_sub/2 from it, nearer the nest, go back to
+  // the last place they saw it and stop there (row 7a): the chain bends round the obstacle
+  if (m.state == PfState::kSubgoalForming) {
+    if (m.target.visible) {
+      m.last_saw_target = in.pose.p;
+    } else if (!m.to_view_edge && m.target_reached && lost(m.target, p) &&
+               dist(m.last_saw_target, m.target.last_seen) / kCm >= 0.5 * p.d_sub &&
+               dist(m.last_saw_target, nest) < dist(m.target.last_seen, nest)) {
+      m.to_view_edge = true;
+    }
+  }
   // site fidelity: remember where the chain needs robots: the RED subgoal in view nearest the
   // nest (its tip), or else the goal
   bool seen = false;
@@ -432,7 +491,8 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
       }
     }
   }
-  m.nest_ticks = (m.state == PfState::kReturnToNest && sight.nest_distance_cm <= p.r_nest_reach) ? m.nest_ticks + 1 : 0;
+  m.nest_ticks =
+      (m.state == PfState::kReturnToNest && sight.nest_distance_cm <= p.r_nest_reach) ? m.nest_ticks + 1 : 0;
 }
 
 const PfTransition* pf_transition(const PfContext& c, PfMemory& m) {
@@ -454,20 +514,20 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   PfSight sight;
   pf_perceive(in, p, mem.nest, m, sight);
   // transitions happen only here, via the table
-  const PfContext c{in, p, m, sight, mem.nest};
+  const PfContext c{in, p, m, sight, mem.nest, mem.nav.on_trail};
   if (const PfTransition* fired = pf_transition(c, m)) {
     nav_reset(mem.nav);
     m.explore_blocked = false;
+    m.to_view_edge = false;
+    m.last_saw_target = in.pose.p;
     m.view_limited = false;
     m.safe_pos = in.pose.p;
     if (fired->to == PfState::kReturnToNest && !m.sighted_this_trip) m.has_sighting = false;  // a stale lead
     if (fired->to == PfState::kExploring) {
       // a new trip: head for the last sighting (site fidelity), else keep the random heading
       m.sighted_this_trip = false;
-      if (p.site_fidelity && m.has_sighting) {
-        mem.walk_heading = angle_of(m.sighting - in.pose.p);
-        mem.walk_dir = unit(mem.walk_heading);
-      }
+      mem.trail.reset(in.pose.p);
+      m.to_sighting = p.site_fidelity && m.has_sighting;
     }
   }
   ++m.t_state;

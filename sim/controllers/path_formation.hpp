@@ -39,11 +39,11 @@ Led led_of(PfState s);
 
 /// Something the robot keeps track of: the goal or nest beacon, or another robot.
 struct Tracked {
-  int id = kNobody;           ///< emitter id: a robot, kNestEmitter or kGoalEmitter
-  Vec2 last_seen;             ///< global position where it was last seen [m]
-  int unseen = 0;             ///< consecutive ticks it has not been seen (T_lost debounce)
-  bool visible = false;       ///< seen this tick
-  Led color = Led::kBlack;    ///< its colour when last seen
+  int id = kNobody;         ///< emitter id: a robot, kNestEmitter or kGoalEmitter
+  Vec2 last_seen;           ///< global position where it was last seen [m]
+  int unseen = 0;           ///< consecutive ticks it has not been seen (T_lost debounce)
+  bool visible = false;     ///< seen this tick
+  Led color = Led::kBlack;  ///< its colour when last seen
 
   bool valid() const { return id != kNobody; }
 };
@@ -51,30 +51,34 @@ struct Tracked {
 /// The path-formation memory of one robot.
 struct PfMemory {
   PfState state = PfState::kExploring;
-  std::int64_t t_state = 0;     ///< ticks in the current state
-  double t_explore = 1000;      ///< T_explore, the exploration budget [ticks]
-  std::int64_t nest_ticks = 0;  ///< consecutive ticks within R_nest_reach while returning (row 3)
-  bool explore_blocked = false; ///< edge following found no way farther from the nest (row 2)
-  Tracked target;               ///< what the robot backs off from while forming
-  bool target_reached = true;   ///< forming: has been within d_detect of the target (row 5 needs it)
-  Tracked parent;               ///< goal-side reference (the goal beacon or a robot)
-  Tracked child;                ///< nest-side reference (the nest beacon or a robot)
-  Vec2 safe_pos;                ///< aligning: where the alignment began, both references in view [m]
-  bool view_limited = false;    ///< aligning: a reference went out of view; back to safe_pos
-  Vec2 sighting;                ///< where the goal or a RED subgoal was last seen [m]
+  std::int64_t t_state = 0;      ///< ticks in the current state
+  double t_explore = 1000;       ///< T_explore, the exploration budget [ticks]
+  std::int64_t nest_ticks = 0;   ///< consecutive ticks within R_nest_reach while returning (row 3)
+  bool explore_blocked = false;  ///< edge following found no way farther from the nest (row 2)
+  Tracked target;                ///< what the robot backs off from while forming
+  bool target_reached = true;    ///< forming: has been within d_detect of the target (row 5 needs it)
+  Vec2 last_saw_target;          ///< forming: the robot's position when it last saw the target [m]
+  bool to_view_edge = false;     ///< forming: target lost, going back to last_saw_target (row 7a)
+  Tracked parent;                ///< goal-side reference (the goal beacon or a robot)
+  Tracked child;                 ///< nest-side reference (the nest beacon or a robot)
+  Vec2 safe_pos;                 ///< aligning: where the alignment began, both references in view [m]
+  bool view_limited = false;     ///< aligning: a reference went out of view; back to safe_pos
+  Vec2 sighting;                 ///< where the goal or a RED subgoal was last seen [m]
   bool has_sighting = false;
   bool sighted_this_trip = false;
-  std::uint8_t last_row = 0;    ///< the table row that fired last (index + 1; 0 = none)
-  std::int64_t fired_tick = -1; ///< the tick it fired
+  bool to_sighting = false;      ///< exploring: first travelling back to the sighting (site fidelity)
+  std::uint8_t last_row = 0;     ///< the table row that fired last (index + 1; 0 = none)
+  std::int64_t fired_tick = -1;  ///< the tick it fired
 };
 
 /// What the robot makes of this tick's camera blobs (computed once, before the guards).
 struct PfSight {
-  const Blob* goal = nullptr;        ///< the goal beacon, when visible
-  const Blob* nest = nullptr;        ///< the nest beacon, when visible
-  const Blob* red_near = nullptr;    ///< the nearest RED robot within d_detect
-  const Blob* lure = nullptr;        ///< the goal, or else the nearest RED robot, within R_vis
-  const Blob* red_nearer_nest = nullptr;  ///< forming: the RED robot in view nearest the nest, if nearer than the target
+  const Blob* goal = nullptr;      ///< the goal beacon, when visible
+  const Blob* nest = nullptr;      ///< the nest beacon, when visible
+  const Blob* red_near = nullptr;  ///< the nearest RED robot within d_detect
+  const Blob* lure = nullptr;      ///< the goal, or else the nearest RED robot, within R_vis
+  const Blob* red_nearer_nest =
+      nullptr;  ///< forming: the RED robot in view nearest the nest, if nearer than the target
   const Blob* my_subnest = nullptr;  ///< the nearest BLUE robot advertising me as its parent
   bool recovery_near = false;        ///< an ORANGE robot within r_rec
   Vec2 repulsion;                    ///< R (SPEC §2.1), robot frame
@@ -87,7 +91,8 @@ struct PfContext {
   const Params& p;
   const PfMemory& m;
   const PfSight& sight;
-  Vec2 nest;  ///< the nest's global position [m]
+  Vec2 nest;              ///< the nest's global position [m]
+  bool on_trail = false;  ///< heading home along its own breadcrumbs
 };
 
 using PfGuard = bool (*)(const PfContext&);
@@ -98,9 +103,9 @@ struct PfTransition {
   PfState from;
   PfGuard when;
   PfState to;
-  PfAction act;           ///< what the transition does besides changing state (may be null)
-  std::string_view row;   ///< SPEC §2.3 row, e.g. "#9a"
-  std::string_view label; ///< the paper's Table 2 label, where one exists
+  PfAction act;            ///< what the transition does besides changing state (may be null)
+  std::string_view row;    ///< SPEC §2.3 row, e.g. "#9a"
+  std::string_view label;  ///< the paper's Table 2 label, where one exists
 };
 
 /// The table, in SPEC §2.3's order; the first row of the current state whose guard holds fires.
