@@ -33,10 +33,6 @@ struct SimulateOptions {
   bool json = false;
 };
 
-nlohmann::json tu_or_null(double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); }
-
-nlohmann::json tick_or_null(std::int64_t t) { return t < 0 ? nlohmann::json(nullptr) : nlohmann::json(t); }
-
 // the paper's figure colours: subgoal path blue, optimisation 1 purple, optimisation 2 green, A* red
 void add_path_lines(Picture& pic, const sim::Metrics& m, const sim::AStarResult* a8) {
   if (a8 != nullptr && a8->found) {
@@ -55,21 +51,6 @@ void add_path_lines(Picture& pic, const sim::Metrics& m, const sim::AStarResult*
   add(m.opt1_path, "#9b30d0", "optimisation-1 path");
   add(m.final_path, "#00a651", "optimisation-2 (final) path");
 }
-
-}  // namespace
-
-void add_path_json(nlohmann::ordered_json& j, const sim::Metrics& m) {
-  j["success"] = m.success;
-  j["ticks_to_form"] = tick_or_null(m.ticks_to_form);
-  j["path_length_tu"] = tu_or_null(m.path_length_tu);
-  j["subgoal_path_length_tu"] = tu_or_null(m.subgoal_path_length_tu);
-  j["opt1_path_length_tu"] = tu_or_null(m.opt1_path_length_tu);
-  j["path_robots"] = m.path_robots;
-  j["ticks_to_chain"] = tick_or_null(m.ticks_to_chain);
-  j["ticks_to_opt1"] = tick_or_null(m.ticks_to_opt1);
-}
-
-namespace {
 
 int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err) {
   sim::Scenario s = scenario_with_overrides(o.scenario, o.robots, o.ticks);

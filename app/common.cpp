@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "common.hpp"
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <unistd.h>
@@ -28,6 +29,25 @@ sim::Scenario scenario_with_overrides(const std::string& path, std::optional<std
   if (robots) s = sim::with_robots(s, *robots);
   if (ticks) s = sim::with_max_ticks(s, *ticks);
   return s;
+}
+
+namespace {
+
+nlohmann::json tu_or_null(double v) { return std::isnan(v) ? nlohmann::json(nullptr) : nlohmann::json(v); }
+
+nlohmann::json tick_or_null(std::int64_t t) { return t < 0 ? nlohmann::json(nullptr) : nlohmann::json(t); }
+
+}  // namespace
+
+void add_path_json(nlohmann::ordered_json& j, const sim::Metrics& m) {
+  j["success"] = m.success;
+  j["ticks_to_form"] = tick_or_null(m.ticks_to_form);
+  j["path_length_tu"] = tu_or_null(m.path_length_tu);
+  j["subgoal_path_length_tu"] = tu_or_null(m.subgoal_path_length_tu);
+  j["opt1_path_length_tu"] = tu_or_null(m.opt1_path_length_tu);
+  j["path_robots"] = m.path_robots;
+  j["ticks_to_chain"] = tick_or_null(m.ticks_to_chain);
+  j["ticks_to_opt1"] = tick_or_null(m.ticks_to_opt1);
 }
 
 std::string fixed(double v, int digits) {

@@ -40,9 +40,12 @@ inline constexpr int kNobody = -100;
 struct Blob {
   Led color = Led::kBlack;
   int emitter = 0;         ///< robot id, kNestEmitter or kGoalEmitter
-  double bearing = 0;      ///< [rad] relative to the heading, (-pi, pi]
+  Vec2 dir{1.0, 0.0};      ///< unit vector toward the emitter, robot frame
   double distance_cm = 0;  ///< horizontal distance [cm]
   int tag = kNobody;       ///< what the emitter advertises with its light (vision + ID, SPEC §2.1)
+
+  /// Bearing relative to the heading [rad], (-pi, pi], counter-clockwise positive.
+  double bearing() const { return angle_of(dir); }
 };
 
 using RabPayload = std::array<std::uint8_t, kRabPayloadBytes>;

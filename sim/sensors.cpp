@@ -159,7 +159,9 @@ void sense_camera(const SensorView& v, int id, std::vector<Blob>& out) {
 
   const auto emit = [&](Vec2 at, Led color, int emitter, int tag) {
     const Vec2 d = at - me.p;
-    out.push_back({color, emitter, angle_of(me.to_local(d)), 100.0 * norm(d), tag});
+    const double len = norm(d);
+    out.push_back(
+        {color, emitter, len > 0.0 ? (1.0 / len) * me.to_local(d) : Vec2{1.0, 0.0}, 100.0 * len, tag});
   };
   // beacons first: nest (blue), goal (yellow)
   if (dist(me.p, v.nest) <= range && !blocked_by_statics(v, near, me.p, v.nest))

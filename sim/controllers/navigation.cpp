@@ -8,11 +8,7 @@
 
 namespace swarmpath::sim {
 
-void nav_reset(NavMemory& nav) {
-  const std::int8_t side = nav.side;
-  nav = NavMemory{};
-  nav.side = side;
-}
+void nav_reset(NavMemory& nav) { nav = NavMemory{}; }
 
 bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, const Percept& in,
                 Vec2 wanted) {
@@ -38,13 +34,33 @@ bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, c
     nav.off_edge = touching ? 0 : nav.off_edge + 1;
     if ((progress_cm > nav.follow_from + kLeave && way_free) || nav.off_edge >= kEdgeLost) {
       nav.following = 0;  // past the obstacle, or it is gone
-    } else if (--nav.following == 0) {
-      nav.gave_up = true;
-      nav.side = static_cast<std::int8_t>(-nav.side);  // try the other way next time
+      nav.side = 0;       // the next obstacle gets a fresh choice
+      nav.reversed = false;
+    } else if (--nav.following == 0 ||
+               (!nav.reversed && static_cast<double>(nav.stalled) >= 5.0 * p.t_trap)) {
+      // out of time, or a dead end (no progress for 5 T_trap): turn back along the same edge
+      // once; when that fails too, give up
+      nav.side = static_cast<std::int8_t>(-nav.side);
+      if (!nav.reversed) {
+        nav.reversed = true;
+        nav.following = static_cast<std::int64_t>(p.t_follow);
+        nav.stalled = 0;
+        nav.best = progress_cm;
+      } else {
+        nav.following = 0;
+        nav.reversed = false;
+        nav.gave_up = true;
+      }
     }
   } else if (p.t_trap > 0 && static_cast<double>(nav.stalled) >= p.t_trap && touching) {
     nav.off_edge = 0;
-    if (nav.side == 0) nav.side = rng.bernoulli(0.5) ? 1 : -1;
+    if (nav.side == 0) {
+      // keep going the way the robot faces: the obstacle on the side that needs the smaller turn
+      // (the sensed obstacle to the left of the heading -> keep it on the left), ties at random
+      Vec2 s;
+      for (std::size_t k = 0; k < kProximityCount; ++k) s += in.proximity[k] * dirs[k];
+      nav.side = s.y > 1e-9 ? -1 : s.y < -1e-9 ? 1 : (rng.bernoulli(0.5) ? 1 : -1);
+    }
     nav.following = static_cast<std::int64_t>(p.t_follow);
     nav.follow_from = progress_cm;
     nav.best = progress_cm;

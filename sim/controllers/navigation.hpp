@@ -4,7 +4,10 @@
 // of obstacles: a robot heading for the nest stops against the near face of a box, an explorer
 // heading away from the nest stops against its far side. When a robot has made no progress for
 // T_trap ticks it follows the obstacle's edge, Bug-style, until it has made 20 cm of progress
-// past where the following began, or T_follow ticks have passed (then it has "given up").
+// past where the following began with the way ahead clear. The side is chosen afresh at each
+// obstacle, from the robot's heading; at a dead end (no progress for 5 T_trap, or T_follow ticks
+// gone) it turns back along the same edge once (the way back may lose ground for a while, so only
+// T_follow limits it), and when that fails too it has "given up".
 #pragma once
 
 #include <cstdint>
@@ -25,6 +28,7 @@ struct NavMemory {
   std::int64_t off_edge = 0;   ///< ticks of the current following without any proximity reading
   bool gave_up = false;        ///< a following ran out without progress
   bool on_trail = false;       ///< going home along the breadcrumbs
+  bool reversed = false;       ///< the current following has already turned back once
 };
 
 /// Clears the progress record (call when the robot starts on a new leg); keeps the side so that

@@ -73,7 +73,7 @@ namespace {
 constexpr double kCm = 0.01;  // metres per cm
 
 Vec2 blob_position(const Pose& pose, const Blob& b) {
-  return pose.p + (b.distance_cm * kCm) * pose.to_world(unit(b.bearing));
+  return pose.p + (b.distance_cm * kCm) * pose.to_world(b.dir);
 }
 
 // robots an explorer keeps clear of besides recovery robots (SPEC §2.3, paper label e)
@@ -334,7 +334,7 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
   const Avoidance avoid = diffusion(in.proximity, p);
   const Vec2 away = -field_toward(in.pose, mem.nest);
   Vec2 v = avoid.direction + p.w_away * away + p.w_rw * in.pose.to_local(mem.walk_dir) + sight.repulsion;
-  if (sight.lure != nullptr) v += p.w_seek * unit(sight.lure->bearing);
+  if (sight.lure != nullptr) v += p.w_seek * sight.lure->dir;
   v *= p.v_max;
   return drive(p, mem, v, PfState::kExploring);
 }
@@ -437,7 +437,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
     const bool repels =
         b.color == Led::kOrange || (m.state == PfState::kExploring && is_path_colour(b.color));
     if (repels && b.distance_cm <= p.r_rec) {
-      sight.repulsion -= p.k_rec * (1.0 - b.distance_cm / p.r_rec) * unit(b.bearing);
+      sight.repulsion -= p.k_rec * (1.0 - b.distance_cm / p.r_rec) * b.dir;
       if (b.color == Led::kOrange) sight.recovery_near = true;
     }
   }

@@ -11,9 +11,17 @@ void Trail::reset(Vec2 start) {
 
 void Trail::record(Vec2 p) {
   if (count_ > 0 && dist(p, crumbs_[static_cast<std::size_t>(count_ - 1)]) < spacing_) return;
+  // loop erasure: back near an earlier crumb, the way since then was a detour
+  for (int i = 0; i + 2 < count_; ++i) {
+    if (dist(p, crumbs_[static_cast<std::size_t>(i)]) < spacing_) {
+      count_ = i + 1;
+      return;
+    }
+  }
   if (count_ == kCapacity) {
     // keep crumbs 0, 2, 4, ...: the trail still starts where it started
-    for (int i = 0; i < kCapacity / 2; ++i) crumbs_[static_cast<std::size_t>(i)] = crumbs_[static_cast<std::size_t>(2 * i)];
+    for (int i = 0; i < kCapacity / 2; ++i)
+      crumbs_[static_cast<std::size_t>(i)] = crumbs_[static_cast<std::size_t>(2 * i)];
     count_ = kCapacity / 2;
     spacing_ *= 2.0;
   }

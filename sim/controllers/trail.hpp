@@ -18,7 +18,8 @@ class Trail {
   /// Starts a new trail at `start`.
   void reset(Vec2 start);
 
-  /// Drops a crumb when the robot is `spacing` from the last one; a full trail keeps every other
+  /// Drops a crumb when the robot is `spacing` from the last one; back within `spacing` of an
+  /// earlier crumb, it cuts the trail back to it (loop erasure); a full trail keeps every other
   /// crumb and doubles its spacing (deterministic thinning).
   void record(Vec2 p);
 

@@ -3,6 +3,7 @@
 // JSON / SVG outputs the issues ask for.
 #include "app/cli.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -141,6 +142,55 @@ TEST(Cli, SimulateWritesAnSvgPicture) {
   EXPECT_NE(text.find("#e00000"), std::string::npos);  // the A* path in red
   EXPECT_NE(text.find("#00ff00"), std::string::npos);  // robots with green LEDs
   EXPECT_NE(text.find("</svg>"), std::string::npos);
+}
+
+std::string slurp(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string short_chain() { return std::string(SWARMPATH_SOURCE_DIR) + "/tests/data/short_chain.toml"; }
+
+TEST(CliTable, OutputIsIdenticalAtOneAndTwoThreads) {
+  const auto dir = temp_file("y", "").parent_path();
+  const auto one = dir / "t1.json";
+  const auto two = dir / "t2.json";
+  const std::vector<std::string> base = {"table", "--scenarios", short_chain(), "--robots", "8,12", "--seeds",
+                                         "2",     "--mode",      "pf",          "--ticks",  "12000"};
+  auto a = base;
+  a.insert(a.end(), {"--threads", "1", "--json", one.string()});
+  auto b = base;
+  b.insert(b.end(), {"--threads", "2", "--json", two.string(), "--csv", (dir / "t2.csv").string()});
+  const Result ra = cli(a);
+  const Result rb = cli(b);
+  ASSERT_EQ(ra.code, 0) << ra.err;
+  ASSERT_EQ(rb.code, 0) << rb.err;
+  EXPECT_EQ(slurp(one), slurp(two));
+  EXPECT_EQ(ra.out, rb.out);  // the markdown table too
+  const auto j = nlohmann::json::parse(slurp(one));
+  ASSERT_EQ(j["runs"].size(), 4u);
+  for (const auto& run : j["runs"]) {
+    for (const char* key :
+         {"scenario", "robots", "seed", "mode", "success", "ticks_to_form", "path_length_tu",
+          "subgoal_path_length_tu", "opt1_path_length_tu", "astar8_tu", "path_robots"}) {
+      EXPECT_TRUE(run.contains(key)) << key;
+    }
+  }
+  EXPECT_TRUE(j["summary"].contains("success_rate_pf"));
+  EXPECT_TRUE(j["summary"].contains("pct_pf_shorter_than_astar"));
+  EXPECT_EQ(j["cases"].size(), 2u);
+  EXPECT_NE(ra.out.find("| Env |"), std::string::npos);
+  // the CSV has a header and one line per run
+  const std::string csv = slurp(dir / "t2.csv");
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
+}
+
+TEST(CliTable, RejectsBadGrids) {
+  EXPECT_EQ(cli({"table", "--scenarios", short_chain(), "--robots", "500"}).code, 2);  // does not fit
+  EXPECT_EQ(cli({"table", "--scenarios", short_chain(), "--seeds", "0"}).code, 2);
+  EXPECT_EQ(cli({"table", "--scenarios", "/no/such/dir"}).code, 2);
 }
 
 TEST(Cli, AstarJson) {

@@ -44,10 +44,10 @@ TEST(Camera, RobotInTheOpenIsSeenWithBearingAndDistance) {
   ASSERT_NE(ahead, nullptr);
   EXPECT_EQ(ahead->color, Led::kGreen);
   EXPECT_NEAR(ahead->distance_cm, 80.0, 1e-4);
-  EXPECT_NEAR(ahead->bearing, 0.0, 1e-6);
+  EXPECT_NEAR(ahead->bearing(), 0.0, 1e-6);
   const Blob* left = find_emitter(blobs, 2);
   ASSERT_NE(left, nullptr);
-  EXPECT_NEAR(left->bearing, kPi / 2, 1e-6);  // bearing counter-clockwise from the heading
+  EXPECT_NEAR(left->bearing(), kPi / 2, 1e-6);  // bearing counter-clockwise from the heading
 }
 
 TEST(Camera, RobotBehindAWallIsNotSeen) {
@@ -81,7 +81,7 @@ TEST(Camera, BeaconsAreSeenUnlessBlocked) {
   ASSERT_NE(nest, nullptr);
   EXPECT_EQ(nest->color, Led::kBlue);
   EXPECT_NEAR(nest->distance_cm, 50.0, 1e-4);
-  EXPECT_NEAR(nest->bearing, 0.0, 1e-6);                            // facing the nest
+  EXPECT_NEAR(nest->bearing(), 0.0, 1e-6);                          // facing the nest
   EXPECT_EQ(find_emitter(camera(s, w, 1), kGoalEmitter), nullptr);  // goal 80 cm away behind the box
 }
 

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: MIT
+// Path formation in motion: an aligning robot moves onto the line between its references, a
+// short chain forms and both optimisation passes complete, and a golden hash of a whole run.
+// Golden values belong to one toolchain: Debian bookworm, g++ 12, libbox2d 2.4.1.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "sim/astar.hpp"
+#include "sim/controllers/alignment.hpp"
+#include "sim/hash.hpp"
+#include "sim/path_metrics.hpp"
+#include "sim/step.hpp"
+#include "test_support.hpp"
+
+namespace swarmpath::sim {
+namespace {
+
+Scenario short_chain() { return load_scenario(test::source_path("tests/data/short_chain.toml")); }
+
+Pose at(double x, double y, double yaw_deg = 0.0) {
+  return {{x, y}, std::cos(deg2rad(yaw_deg)), std::sin(deg2rad(yaw_deg))};
+}
+
+Tracked ref(int id, Vec2 where) {
+  Tracked t;
+  t.id = id;
+  t.last_seen = where;
+  t.visible = true;
+  return t;
+}
+
+TEST(PfAlignment, ARobotOffTheLineMovesOntoIt) {  // SPEC §2.4
+  const Scenario s = short_chain();
+  const Params p;
+  // robot 0: a sub-nest (child side), robot 1: a RED subgoal (parent side), robot 2: aligning
+  World w = make_world(s, p, Mode::kPathFormation, 1, std::vector<Pose>{at(-0.6, 0.0), at(0.6, 0.0), at(0.0, 0.3, 90)});
+  w.memory[0].pf.state = PfState::kSubNest;
+  w.memory[0].pf.parent = ref(2, {0.0, 0.3});
+  w.memory[1].pf.state = PfState::kSubgoal;
+  w.memory[1].pf.parent = ref(kGoalEmitter, s.goal);
+  PfMemory& m = w.memory[2].pf;
+  m.state = PfState::kOpt1;
+  m.parent = ref(1, {0.6, 0.0});
+  m.child = ref(0, {-0.6, 0.0});
+  w.leds = {Led::kBlue, Led::kRed, Led::kMagenta};
+  MetricsAccumulator acc;
+  acc.begin(3);
+  while (m.state == PfState::kOpt1 && w.tick < 400) step(s, p, w, acc);
+  EXPECT_EQ(m.state, PfState::kSubNest) << "still " << to_string(m.state) << " at tick " << w.tick;
+  // aligned (SPEC §2.4): error angle within e_tol, or within d_tol of the foot on the line
+  const Vec2 q = w.positions[2];
+  const double e = error_angle(angle_of(w.positions[1] - q), angle_of(w.positions[0] - q));
+  const double off_line_cm = 100.0 * std::fabs(q.y);
+  EXPECT_TRUE(e <= deg2rad(p.e_tol) + 1e-3 || off_line_cm <= p.d_tol + 0.5)
+      << "error angle " << rad2deg(e) << " deg, " << off_line_cm << " cm off the line";
+  EXPECT_LT(std::fabs(q.x), 0.30);  // between its references
+  // both references stay where they were: stopped robots brake
+  EXPECT_LT(dist(w.positions[0], {-0.6, 0.0}), 0.02);
+  EXPECT_LT(dist(w.positions[1], {0.6, 0.0}), 0.02);
+}
+
+TEST(PfRun, AShortChainFormsAndBothPassesComplete) {
+  const Scenario s = short_chain();
+  World w;
+  const Metrics m = run(Params{}, s, Mode::kPathFormation, 1, {}, &w);
+  ASSERT_TRUE(m.success) << "no path in " << m.ticks << " ticks";
+  // events in the order of SPEC §2.5
+  EXPECT_GT(m.ticks_to_chain, 0);
+  EXPECT_LE(m.ticks_to_chain, m.ticks_to_opt1);
+  EXPECT_LE(m.ticks_to_opt1, m.ticks_to_form);
+  EXPECT_EQ(m.ticks, m.ticks_to_form);  // the run stops at completion
+  // the chain: 3.6 m with links of at most R_vis = 1 m needs at least 3 robots
+  EXPECT_GE(m.path_robots, 3);
+  const double straight_tu = to_tu(dist(s.nest, s.goal));
+  EXPECT_GE(m.path_length_tu, straight_tu - 1e-9);
+  EXPECT_LE(m.path_length_tu, 1.3 * straight_tu);
+  // every link is within camera range and every chain robot finished optimisation 2
+  const std::vector<Vec2>& pts = m.final_path.points;
+  for (std::size_t i = 1; i < pts.size(); ++i) EXPECT_LE(dist(pts[i - 1], pts[i]), 1.0 + 1e-9);
+  for (const int id : m.final_path.robots) {
+    EXPECT_EQ(w.memory[static_cast<std::size_t>(id)].pf.state, PfState::kPathDone) << "robot " << id;
+  }
+  // the chain is the one the world holds: nest-side robot's parents lead to the goal
+  EXPECT_EQ(chain_to_goal(w, m.final_path.robots.front()), m.final_path.robots);
+}
+
+TEST(PfRun, KeepRunningContinuesPastCompletion) {
+  Scenario s = with_max_ticks(short_chain(), 20000);
+  const Metrics stop = evaluate(Params{}, s, Mode::kPathFormation, 1);
+  ASSERT_TRUE(stop.success);
+  s.sim.stop_when_complete = false;
+  s = with_max_ticks(s, stop.ticks + 200);
+  const Metrics go_on = evaluate(Params{}, s, Mode::kPathFormation, 1);
+  EXPECT_EQ(go_on.ticks, stop.ticks + 200);
+  EXPECT_EQ(go_on.ticks_to_form, stop.ticks_to_form);  // the same run, measured the same
+}
+
+TEST(Determinism, GoldenHashPathFormationShortChain) {
+  // update only with a reason, stated in the commit that changes it
+  constexpr std::uint64_t kExpected = 0xe1e20c198e82ea81ULL;  // a complete run: 2448 ticks
+  const Metrics m = evaluate(Params{}, short_chain(), Mode::kPathFormation, 1);
+  EXPECT_EQ(m.state_hash, kExpected) << "actual state_hash 0x" << to_hex(m.state_hash) << " (ticks " << m.ticks
+                                     << ")";
+}
+
+}  // namespace
+}  // namespace swarmpath::sim

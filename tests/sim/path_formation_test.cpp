@@ -1,0 +1,370 @@
+// SPDX-License-Identifier: MIT
+// The path-formation table (SPEC §2.3): one test per row, each a reading that meets the row's
+// guard and the state it must lead to; the table's structure; and the optimisation geometry.
+#include <cmath>
+#include <set>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "sim/controller.hpp"
+#include "sim/controllers/alignment.hpp"
+#include "sim/controllers/path_formation.hpp"
+
+namespace swarmpath::sim {
+namespace {
+
+constexpr Vec2 kNest{-5.0, 0.0};
+constexpr int kMe = 3;
+
+// the robot at the origin facing +x; blobs are given in the robot frame
+struct Reading {
+  std::vector<Blob> blobs;
+  Vec2 at{0.0, 0.0};
+  std::int64_t tick = 100;
+
+  Blob& add(Led c, int emitter, double bearing_deg, double distance_cm, int tag = kNobody) {
+    blobs.push_back({c, emitter, unit(deg2rad(bearing_deg)), distance_cm, tag});
+    return blobs.back();
+  }
+
+  Percept percept() const {
+    Percept in;
+    in.tick = tick;
+    in.id = kMe;
+    in.pose = {at, 1.0, 0.0};
+    in.blobs = blobs;
+    return in;
+  }
+};
+
+Tracked tracked(int id, Vec2 at) {
+  Tracked t;
+  t.id = id;
+  t.last_seen = at;
+  t.visible = true;
+  return t;
+}
+
+// perceive, then apply the table; returns the row that fired ("" for none)
+std::string fire(PfMemory& m, const Reading& r, const Params& p = {}) {
+  const Percept in = r.percept();
+  PfSight sight;
+  pf_perceive(in, p, kNest, m, sight);
+  const PfContext c{in, p, m, sight, kNest, false};
+  const PfTransition* row = pf_transition(c, m);
+  return row ? std::string(row->row) : std::string();
+}
+
+PfMemory in_state(PfState s) {
+  PfMemory m;
+  pf_init(m, Params{});
+  m.state = s;
+  return m;
+}
+
+TEST(PfTable, Row1FindsTheGoalWithinDetectRange) {  // label c
+  PfMemory m = in_state(PfState::kExploring);
+  Reading r;
+  r.add(Led::kYellow, kGoalEmitter, 10, 25);
+  r.add(Led::kRed, 7, -20, 20);
+  EXPECT_EQ(fire(m, r), "#1");
+  EXPECT_EQ(m.state, PfState::kSubgoalForming);
+  EXPECT_EQ(m.target.id, kGoalEmitter);  // the goal is preferred
+}
+
+TEST(PfTable, Row1FindsARedSubgoal) {
+  PfMemory m = in_state(PfState::kExploring);
+  Reading r;
+  r.add(Led::kRed, 7, 45, 28);
+  r.add(Led::kYellow, kGoalEmitter, 0, 60);  // seen, but beyond d_detect
+  EXPECT_EQ(fire(m, r), "#1");
+  EXPECT_EQ(m.target.id, 7);
+  PfMemory far = in_state(PfState::kExploring);
+  Reading out;
+  out.add(Led::kRed, 7, 45, 35);  // 35 cm > d_detect = 30
+  EXPECT_EQ(fire(far, out), "");
+}
+
+TEST(PfTable, Row2ExplorationBudgetSpent) {  // label b
+  PfMemory m = in_state(PfState::kExploring);
+  m.t_state = 999;
+  EXPECT_EQ(fire(m, Reading{}), "");
+  m.t_state = 1000;  // T_explore0
+  EXPECT_EQ(fire(m, Reading{}), "#2");
+  EXPECT_EQ(m.state, PfState::kReturnToNest);
+}
+
+TEST(PfTable, Row3ReachedTheNest) {  // label d
+  PfMemory m = in_state(PfState::kReturnToNest);
+  Reading r;
+  r.at = kNest + Vec2{0.5, 0.0};  // within R_nest_reach
+  m.nest_ticks = 48;
+  EXPECT_EQ(fire(m, r), "");  // 49 < T_nest_search
+  EXPECT_EQ(fire(m, r), "#3");
+  EXPECT_EQ(m.state, PfState::kResting);
+}
+
+TEST(PfTable, Row4RestOverGrowsTheBudget) {  // label i
+  PfMemory m = in_state(PfState::kResting);
+  m.t_state = 50;
+  EXPECT_EQ(fire(m, Reading{}), "#4");
+  EXPECT_EQ(m.state, PfState::kExploring);
+  EXPECT_DOUBLE_EQ(m.t_explore, 1500.0);  // T_explore0 + dT_explore
+}
+
+// a forming robot at the origin; its target, red robot 7, lies 75 cm away from the nest
+PfMemory forming(Vec2 target_at) {
+  PfMemory m = in_state(PfState::kSubgoalForming);
+  m.target = tracked(7, target_at);
+  m.target_reached = true;
+  return m;
+}
+
+TEST(PfTable, Row5SubgoalAtDsubFromTheTarget) {
+  PfMemory m = forming({0.75, 0.0});
+  Reading r;
+  r.add(Led::kRed, 7, 0, 75);
+  EXPECT_EQ(fire(m, r), "#5");
+  EXPECT_EQ(m.state, PfState::kSubgoal);
+  EXPECT_EQ(m.parent.id, 7);
+  // not yet 70 cm away: keeps forming
+  PfMemory near = forming({0.60, 0.0});
+  Reading r2;
+  r2.add(Led::kRed, 7, 0, 60);
+  EXPECT_EQ(fire(near, r2), "");
+}
+
+TEST(PfTable, Row5rRetargetsToTheSubgoalNearerTheNest) {  // label c while forming
+  PfMemory m = forming({0.30, 0.0});
+  Reading r;
+  r.add(Led::kRed, 7, 0, 30);
+  r.add(Led::kRed, 8, 180, 60);  // at (-0.6, 0): 0.9 m nearer the nest
+  EXPECT_EQ(fire(m, r), "#5r");
+  EXPECT_EQ(m.state, PfState::kSubgoalForming);
+  EXPECT_EQ(m.target.id, 8);
+  EXPECT_FALSE(m.target_reached);  // walks to it first
+}
+
+TEST(PfTable, Row6aReachedTheNestBeforeDsub) {
+  PfMemory m = forming({-4.5, 0.0});
+  Reading r;
+  r.at = kNest + Vec2{0.2, 0.0};
+  r.add(Led::kRed, 7, 0, 30);
+  EXPECT_EQ(fire(m, r), "#6a");
+  EXPECT_EQ(m.state, PfState::kSubgoal);
+}
+
+TEST(PfTable, Row6bStopsInTheRecoveryRange) {
+  PfMemory m = forming({0.40, 0.0});
+  Reading r;
+  r.add(Led::kRed, 7, 0, 40);
+  r.add(Led::kOrange, 9, 170, 15);  // within r_rec = 20
+  EXPECT_EQ(fire(m, r), "#6b");
+  EXPECT_EQ(m.state, PfState::kSubgoal);
+  Params off;
+  off.early_stop_in_rec = false;
+  PfMemory m2 = forming({0.40, 0.0});
+  EXPECT_EQ(fire(m2, r, off), "");
+}
+
+TEST(PfTable, Row7aStopsWhereTheTargetWasLastInView) {
+  PfMemory m = forming({0.60, 0.0});
+  m.to_view_edge = true;
+  m.last_saw_target = {0.0, 0.0};
+  EXPECT_EQ(fire(m, Reading{}), "#7a");
+  EXPECT_EQ(m.state, PfState::kSubgoal);
+}
+
+TEST(PfTable, Row7TargetLostInTheVisibleRange) {  // label f
+  PfMemory m = forming({1.05, 0.0});
+  m.target.unseen = 2;  // lost after this tick's miss (T_lost = 3)
+  m.last_saw_target = {0.9, 0.0};  // lost while still close to it: no view-edge stop
+  EXPECT_EQ(fire(m, Reading{}), "#7");
+  EXPECT_EQ(m.state, PfState::kRecovery);
+}
+
+TEST(PfTable, Row8StallGuard) {
+  PfMemory seen = forming({0.40, 0.0});
+  seen.t_state = 600;  // T_form_timeout
+  Reading r;
+  r.add(Led::kRed, 7, 0, 40);
+  EXPECT_EQ(fire(seen, r), "#8a");
+  EXPECT_EQ(seen.state, PfState::kSubgoal);
+  PfMemory unseen = forming({0.40, 0.0});
+  unseen.t_state = 600;
+  unseen.last_saw_target = {0.3, 0.0};
+  EXPECT_EQ(fire(unseen, Reading{}), "#8b");
+  EXPECT_EQ(unseen.state, PfState::kRecovery);
+}
+
+TEST(PfTable, Row9aSubgoalSeesTheNest) {  // label g
+  PfMemory m = in_state(PfState::kSubgoal);
+  m.parent = tracked(7, {0.7, 0.0});
+  Reading r;
+  r.add(Led::kRed, 7, 0, 70);
+  r.add(Led::kBlue, kNestEmitter, 180, 90);
+  EXPECT_EQ(fire(m, r), "#9a");
+  EXPECT_EQ(m.state, PfState::kOpt1);
+  EXPECT_EQ(m.child.id, kNestEmitter);
+}
+
+TEST(PfTable, Row9bSubgoalSeesItsOwnSubNest) {  // label g
+  PfMemory m = in_state(PfState::kSubgoal);
+  m.parent = tracked(7, {0.7, 0.0});
+  Reading r;
+  r.add(Led::kRed, 7, 0, 70);
+  r.add(Led::kBlue, 11, 170, 70, /*tag=*/12);  // someone else's sub-nest
+  EXPECT_EQ(fire(m, r), "");
+  r.add(Led::kBlue, 12, 180, 70, /*tag=*/kMe);  // mine
+  EXPECT_EQ(fire(m, r), "#9b");
+  EXPECT_EQ(m.child.id, 12);
+}
+
+// an aligning robot exactly between its parent (ahead) and child (behind)
+PfMemory aligning(PfState s, Reading& r) {
+  PfMemory m = in_state(s);
+  m.parent = tracked(7, {0.7, 0.0});
+  m.child = tracked(12, {-0.7, 0.0});
+  r.add(Led::kRed, 7, 0, 70);
+  r.add(Led::kBlue, 12, 180, 70);
+  return m;
+}
+
+TEST(PfTable, Row10Opt1DoneWhenAligned) {
+  Reading r;
+  PfMemory m = aligning(PfState::kOpt1, r);
+  EXPECT_EQ(fire(m, r), "#10");
+  EXPECT_EQ(m.state, PfState::kSubNest);
+  // off the line by 40 degrees of error: still aligning
+  Reading bent;
+  PfMemory m2 = aligning(PfState::kOpt1, bent);
+  bent.blobs[0].dir = unit(deg2rad(40));
+  m2.parent.last_seen = 0.7 * unit(deg2rad(40));
+  EXPECT_EQ(fire(m2, bent), "");
+}
+
+TEST(PfTable, Row11LastSubgoalOrParentDone) {  // label h
+  PfMemory last = in_state(PfState::kSubNest);
+  last.parent = tracked(kGoalEmitter, {0.7, 0.0});
+  EXPECT_EQ(fire(last, Reading{}), "#11");
+  EXPECT_EQ(last.state, PfState::kOpt2);
+  PfMemory mid = in_state(PfState::kSubNest);
+  mid.parent = tracked(7, {0.7, 0.0});
+  Reading red;
+  red.add(Led::kRed, 7, 0, 70);
+  EXPECT_EQ(fire(mid, red), "");
+  Reading brown;
+  brown.add(Led::kBrown, 7, 0, 70);
+  EXPECT_EQ(fire(mid, brown), "#11");
+}
+
+TEST(PfTable, Row12Opt2DoneWhenAligned) {  // label a
+  Reading r;
+  PfMemory m = aligning(PfState::kOpt2, r);
+  EXPECT_EQ(fire(m, r), "#12");
+  EXPECT_EQ(m.state, PfState::kPathDone);
+}
+
+TEST(PfTable, Row13ReferenceLostWhileAligning) {  // label f
+  for (const PfState s : {PfState::kOpt1, PfState::kOpt2}) {
+    Reading r;
+    PfMemory m = aligning(s, r);
+    r.blobs.erase(r.blobs.begin());  // the parent is gone
+    m.parent.unseen = 2;
+    EXPECT_EQ(fire(m, r), s == PfState::kOpt1 ? "#13a" : "#13b");
+    EXPECT_EQ(m.state, PfState::kRecovery);
+  }
+}
+
+TEST(PfTable, Row14RevertOrphansOnlyWithTheOption) {
+  Params p;
+  for (const PfState s : {PfState::kSubNest, PfState::kPathDone}) {
+    PfMemory m = in_state(s);
+    m.parent = tracked(7, {0.7, 0.0});
+    m.parent.unseen = 5;
+    EXPECT_EQ(fire(m, Reading{}, p), "") << to_string(s);
+    p.revert_orphans = true;
+    EXPECT_EQ(fire(m, Reading{}, p), s == PfState::kSubNest ? "#14a" : "#14b");
+    EXPECT_EQ(m.state, PfState::kSubgoal);
+    p.revert_orphans = false;
+  }
+}
+
+TEST(PfTable, RecoveryIsForever) {  // SPEC §2.3 row 14 [I]
+  PfMemory m = in_state(PfState::kRecovery);
+  m.t_state = 100000;
+  Reading r;
+  r.add(Led::kYellow, kGoalEmitter, 0, 10);
+  r.add(Led::kBlue, kNestEmitter, 0, 10);
+  EXPECT_EQ(fire(m, r), "");
+}
+
+TEST(PfTable, StructureEveryRowCitedOnceAndEveryActiveStateHasAnExit) {
+  std::set<std::string> rows;
+  std::set<PfState> from;
+  for (const PfTransition& t : pf_transitions()) {
+    EXPECT_TRUE(rows.insert(std::string(t.row)).second) << "duplicate row " << t.row;
+    from.insert(t.from);
+    EXPECT_NE(t.when, nullptr);
+  }
+  for (int s = 0; s < kPfStateCount; ++s) {
+    const auto state = static_cast<PfState>(s);
+    const bool terminal = state == PfState::kRecovery || state == PfState::kPathDone;
+    if (!terminal) {
+      EXPECT_TRUE(from.count(state)) << to_string(state) << " has no exit";
+    }
+  }
+  // the paper's Table 2 labels that apply to path formation all appear
+  std::set<std::string> labels;
+  for (const PfTransition& t : pf_transitions()) labels.insert(std::string(t.label));
+  for (const char* l : {"a", "b", "c", "d", "f", "g", "h", "i"}) EXPECT_TRUE(labels.count(l)) << l;
+}
+
+TEST(PfLeds, ColoursOfSpec22) {  // SPEC §2.2: white forming, red subgoal, blue sub-nest [P]
+  EXPECT_EQ(led_of(PfState::kSubgoalForming), Led::kWhite);
+  EXPECT_EQ(led_of(PfState::kSubgoal), Led::kRed);
+  EXPECT_EQ(led_of(PfState::kSubNest), Led::kBlue);
+  EXPECT_EQ(led_of(PfState::kRecovery), Led::kOrange);
+  EXPECT_EQ(led_of(PfState::kResting), Led::kBlack);
+}
+
+// ---- optimisation geometry (SPEC §2.4) ----
+
+TEST(Alignment, ErrorAngleIsZeroOnTheSegment) {
+  EXPECT_NEAR(error_angle(deg2rad(10), deg2rad(-170)), 0.0, 1e-12);  // A and B opposite
+  EXPECT_NEAR(error_angle(deg2rad(90), deg2rad(-90)), 0.0, 1e-12);
+  EXPECT_NEAR(error_angle(deg2rad(0), deg2rad(90)), kPi / 2, 1e-12);  // a right angle
+  EXPECT_NEAR(error_angle(deg2rad(30), deg2rad(30)), kPi, 1e-12);     // both on one side
+}
+
+TEST(Alignment, TargetIsTheFootOfThePerpendicular) {
+  const Params p;
+  const Vec2 t = alignment_target({-50, 40}, {50, 40}, p);  // robot 40 cm below A-B
+  EXPECT_NEAR(t.x, 0.0, 1e-12);
+  EXPECT_NEAR(t.y, 40.0, 1e-12);
+  // the foot is clamped to the segment
+  const Vec2 end = alignment_target({20, 10}, {80, 10}, p);
+  EXPECT_NEAR(end.x, 20.0, 1e-12);
+}
+
+TEST(Alignment, TargetKeepsBothReferencesWithinRkeep) {
+  const Params p;  // R_keep = 90
+  const Vec2 a{0, 10};
+  const Vec2 b{170, 10};
+  const Vec2 t = alignment_target(a, b, p);  // the foot (0, 10) is 170 cm from B
+  EXPECT_LE(dist(t, b), p.r_keep + 1e-9);
+  EXPECT_LE(dist(t, a), p.r_keep + 1e-9);
+  const Vec2 mid = alignment_target({0, 10}, {200, 10}, p);  // no point within 90 of both
+  EXPECT_NEAR(mid.x, 100.0, 1e-12);
+}
+
+TEST(Alignment, MidpointBlend) {
+  Params p;
+  p.lambda_mid = 1.0;
+  const Vec2 t = alignment_target({-50, 40}, {70, 40}, p);
+  EXPECT_NEAR(t.x, 10.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace swarmpath::sim
