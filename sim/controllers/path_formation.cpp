@@ -150,7 +150,10 @@ bool found_goal_or_subgoal(const PfContext& c) {  // row 1, label c
 }
 
 bool exploration_time_over(const PfContext& c) {  // row 2, label b (or blocked for good)
-  return static_cast<double>(c.m.t_state) >= c.m.t_explore || c.m.explore_blocked;
+  // travelling back to a sighting does not spend the budget (capped at three budgets)
+  const double spent = static_cast<double>(c.m.t_state - c.m.travel_ticks);
+  const bool lost_way = static_cast<double>(c.m.travel_ticks) >= 3.0 * c.m.t_explore;
+  return spent >= c.m.t_explore || c.m.explore_blocked || lost_way;
 }
 
 bool reached_nest(const PfContext& c) {  // row 3, label d
@@ -314,6 +317,7 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
   update_walk_heading(mem.walk_heading, mem.walk_dir, mem.rng, p);
   // site fidelity: travel back to where the chain was seen, then explore from there
   PfMemory& m = mem.pf;
+  if (m.to_sighting) ++m.travel_ticks;
   if (m.to_sighting && (sight.lure != nullptr || dist(in.pose.p, m.sighting) < 0.5)) {
     m.to_sighting = false;
     mem.walk_heading = in.pose.yaw();
@@ -528,6 +532,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
       m.sighted_this_trip = false;
       mem.trail.reset(in.pose.p);
       m.to_sighting = p.site_fidelity && m.has_sighting;
+      m.travel_ticks = 0;
     }
   }
   ++m.t_state;

@@ -67,6 +67,7 @@ struct PfMemory {
   bool has_sighting = false;
   bool sighted_this_trip = false;
   bool to_sighting = false;      ///< exploring: first travelling back to the sighting (site fidelity)
+  std::int64_t travel_ticks = 0;  ///< exploring: ticks spent travelling to the sighting (not budget)
   std::uint8_t last_row = 0;     ///< the table row that fired last (index + 1; 0 = none)
   std::int64_t fired_tick = -1;  ///< the tick it fired
 };
