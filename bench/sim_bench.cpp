@@ -49,6 +49,22 @@ void BM_Env4Tiled(benchmark::State& state) { run_ticks(state, env4_tiled(static_
 
 BENCHMARK(BM_Env4Tiled)->Arg(1)->Arg(3)->Arg(10)->Iterations(400)->Unit(benchmark::kMillisecond);
 
+// path formation, 100 robots in env4, from deployment to path completion (seed 3)
+void BM_PathFormationEnv4ToCompletion(benchmark::State& state) {
+  const sim::Scenario s = env4();
+  const sim::Params p;
+  sim::Metrics m;
+  for (auto _ : state) {
+    m = sim::evaluate(p, s, sim::Mode::kPathFormation, 3);
+    benchmark::DoNotOptimize(m.state_hash);
+  }
+  const double robot_ticks = static_cast<double>(state.iterations()) * m.robots * static_cast<double>(m.ticks);
+  state.SetItemsProcessed(static_cast<std::int64_t>(robot_ticks));
+  state.counters["ticks_to_form"] = static_cast<double>(m.ticks_to_form);
+  state.counters["success"] = m.success ? 1 : 0;
+}
+BENCHMARK(BM_PathFormationEnv4ToCompletion)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+
 }  // namespace
 }  // namespace swarmpath::bench
 
