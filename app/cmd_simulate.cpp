@@ -90,7 +90,8 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
   }
   const double robot_ticks_per_s =
       seconds > 0 ? static_cast<double>(m.robots) * static_cast<double>(m.ticks) / seconds : 0.0;
-  const bool pf = mode == sim::Mode::kPathFormation;
+  const bool pf = mode == sim::Mode::kPathFormation || mode == sim::Mode::kTaskAllocation;
+  const bool ta = mode == sim::Mode::kTaskAllocation;
 
   if (!o.svg.empty()) {
     Picture pic;
@@ -123,6 +124,11 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
     j["mean_speed_cm_s"] = m.mean_speed_cm_s;
     j["astar8_tu"] = a8 && a8->found ? nlohmann::json(sim::to_tu(a8->length_m)) : nlohmann::json(nullptr);
     if (pf) add_path_json(j, m);
+    if (ta && m.allocated < 0) {  // no allocation happened: say so explicitly
+      j["allocated"] = nullptr;
+      j["resource_reduction_pct"] = nullptr;
+      j["ticks_to_allocate"] = nullptr;
+    }
     j["table_unit_cm"] = 10;
     j["wall_seconds"] = seconds;
     j["robot_ticks_per_second"] = robot_ticks_per_s;
@@ -146,6 +152,14 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
         << length(m.opt1_path_length_tu) << "\n";
     out << "  T_form        " << m.ticks_to_form << " ticks, final path " << length(m.path_length_tu) << " ("
         << m.path_robots << " robots)\n";
+    if (ta) {
+      out << "  allocation    "
+          << (m.allocated >= 0
+                  ? std::to_string(m.allocated) + " robots at tick " + std::to_string(m.ticks_to_allocate) +
+                        ", resource reduction " + fixed(m.resource_reduction_pct, 1) + " %"
+                  : std::string("none"))
+          << "\n";
+    }
   }
   out << "  wall time     " << fixed(seconds, 3) << " s (" << fixed(robot_ticks_per_s / 1e6, 2)
       << " M robot-ticks/s)\n";
@@ -167,7 +181,8 @@ Runner add_simulate(CLI::App& app) {
                  "Ticks to simulate (default: the scenario's max_ticks; 10 ticks = 1 s)");
   app.add_option(
          "--mode", o->mode,
-         "Controller: diffusion (random walk with obstacle avoidance) or pf (the paper's path formation)")
+         "Controller: diffusion (random walk with obstacle avoidance), pf (the paper's path formation) or ta "
+         "(task allocation, then path formation)")
       ->capture_default_str();
   app.add_flag("--keep-running", o->keep_running, "pf: keep simulating after the path is complete");
   app.add_option("--svg", o->svg,

@@ -48,6 +48,11 @@ void add_path_json(nlohmann::ordered_json& j, const sim::Metrics& m) {
   j["path_robots"] = m.path_robots;
   j["ticks_to_chain"] = tick_or_null(m.ticks_to_chain);
   j["ticks_to_opt1"] = tick_or_null(m.ticks_to_opt1);
+  if (m.allocated >= 0 || m.ticks_to_allocate >= 0 || !std::isnan(m.resource_reduction_pct)) {
+    j["allocated"] = m.allocated;
+    j["resource_reduction_pct"] = tu_or_null(m.resource_reduction_pct);
+    j["ticks_to_allocate"] = tick_or_null(m.ticks_to_allocate);
+  }
 }
 
 std::string fixed(double v, int digits) {

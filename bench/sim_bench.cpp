@@ -58,11 +58,13 @@ void BM_PathFormationEnv4ToCompletion(benchmark::State& state) {
     m = sim::evaluate(p, s, sim::Mode::kPathFormation, 3);
     benchmark::DoNotOptimize(m.state_hash);
   }
-  const double robot_ticks = static_cast<double>(state.iterations()) * m.robots * static_cast<double>(m.ticks);
+  const double robot_ticks =
+      static_cast<double>(state.iterations()) * m.robots * static_cast<double>(m.ticks);
   state.SetItemsProcessed(static_cast<std::int64_t>(robot_ticks));
   state.counters["ticks_to_form"] = static_cast<double>(m.ticks_to_form);
   state.counters["success"] = m.success ? 1 : 0;
 }
+
 BENCHMARK(BM_PathFormationEnv4ToCompletion)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

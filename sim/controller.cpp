@@ -12,6 +12,8 @@ std::string_view to_string(Mode m) {
       return "diffusion";
     case Mode::kPathFormation:
       return "pf";
+    case Mode::kTaskAllocation:
+      return "ta";
   }
   return "?";
 }
@@ -29,8 +31,16 @@ SensorNeeds sensor_needs(Mode m) {
       return {.proximity = true, .camera = false, .rab = false};
     case Mode::kPathFormation:
       return {.proximity = true, .camera = true, .rab = false};
+    case Mode::kTaskAllocation:
+      return {.proximity = true, .camera = true, .rab = true};
   }
   return {};
+}
+
+bool robot_listens(Mode m, const RobotMemory& mem) {
+  if (m != Mode::kTaskAllocation) return true;  // the world's needs.rab decides
+  return mem.ta.state == TaState::kScout || mem.ta.state == TaState::kGoalFounder ||
+         mem.ta.state == TaState::kDecisionMaker;
 }
 
 Led initial_led(Mode m) {
@@ -38,6 +48,7 @@ Led initial_led(Mode m) {
     case Mode::kDiffusion:
       return Led::kGreen;
     case Mode::kPathFormation:
+    case Mode::kTaskAllocation:
       return led_of(PfState::kExploring);
   }
   return Led::kBlack;
@@ -58,6 +69,10 @@ RobotMemory init_memory(Mode m, int id, const Pose& start, Vec2 nest, const Para
       mem.trail.reset(start.p);
       mem.state = static_cast<std::uint8_t>(mem.pf.state);
       break;
+    case Mode::kTaskAllocation:
+      ta_init(mem, p);
+      mem.trail.reset(start.p);
+      break;
   }
   return mem;
 }
@@ -68,6 +83,8 @@ Command control(Mode m, const Percept& in, const Params& p, RobotMemory& mem) {
       return diffusion_step(in, p, mem);
     case Mode::kPathFormation:
       return path_formation_step(in, p, mem);
+    case Mode::kTaskAllocation:
+      return task_allocation_step(in, p, mem, mem.swarm);
   }
   return {};
 }

@@ -9,6 +9,7 @@
 
 #include "controllers/navigation.hpp"
 #include "controllers/path_formation.hpp"
+#include "controllers/task_allocation.hpp"
 #include "drive.hpp"
 #include "motion.hpp"
 #include "params.hpp"
@@ -19,12 +20,13 @@ namespace swarmpath::sim {
 
 /// Which controller every robot runs.
 enum class Mode : std::uint8_t {
-  kDiffusion,      ///< random walk with proximity obstacle avoidance (ARGoS diffusion example)
-  kPathFormation,  ///< the paper's path formation, all robots (SPEC §2.3, "without TA")
+  kDiffusion,       ///< random walk with proximity obstacle avoidance (ARGoS diffusion example)
+  kPathFormation,   ///< the paper's path formation, all robots (SPEC §2.3, "without TA")
+  kTaskAllocation,  ///< task allocation, then path formation by the allocated robots (SPEC §2.6, "with TA")
 };
 
 /// Every mode, for listings and --help.
-inline constexpr Mode kModes[] = {Mode::kDiffusion, Mode::kPathFormation};
+inline constexpr Mode kModes[] = {Mode::kDiffusion, Mode::kPathFormation, Mode::kTaskAllocation};
 
 std::string_view to_string(Mode m);
 std::optional<Mode> parse_mode(std::string_view s);
@@ -38,12 +40,19 @@ struct RobotMemory {
   std::uint8_t state = 0;           ///< the controller's state code (part of state_hash)
   Vec2 start;                       ///< initial deployment point [m]
   Vec2 nest;                        ///< the nest's position, from the positioning frame [m]
-  PfMemory pf;                      ///< path formation (Mode::kPathFormation)
+  PfMemory pf;                      ///< path formation (also a TA scout's and allocated robot's)
+  TaMemory ta;                      ///< task allocation (Mode::kTaskAllocation)
+  std::uint8_t env_class = 0;       ///< the scenario's EnvClass (selects delta, Eq. 3)
+  int swarm = 0;                    ///< N, the robots deployed
   NavMemory nav;                    ///< going to a point (nest, deployment point)
   Trail trail;                      ///< breadcrumbs of the current exploration trip
 };
 
 SensorNeeds sensor_needs(Mode m);
+
+/// Whether one robot listens to the range-and-bearing medium in its current state, when the world
+/// senses it at all: in task allocation, only scouts, founders and decision makers do.
+bool robot_listens(Mode m, const RobotMemory& mem);
 
 /// The LED colour robots show before their first control step.
 Led initial_led(Mode m);

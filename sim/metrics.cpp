@@ -12,9 +12,17 @@ void MetricsAccumulator::begin(int robots) {
 }
 
 void MetricsAccumulator::observe(const Scenario& s, const World& w) {
-  if (w.mode == Mode::kPathFormation) {
-    watch_path_ = true;
-    path_.observe(s, w);
+  if (w.mode != Mode::kPathFormation && w.mode != Mode::kTaskAllocation) return;
+  watch_path_ = true;
+  path_.observe(s, w);
+  if (w.mode != Mode::kTaskAllocation || alloc_tick_ >= 0) return;
+  // T_alloc: the first founder to broadcast DONE; its count (and itself, when it counts itself)
+  for (const RobotMemory& mem : w.memory) {
+    if (mem.ta.alloc_done_tick == w.tick - 1) {
+      alloc_tick_ = w.tick;
+      allocated_ = mem.ta.allocated;
+      break;
+    }
   }
 }
 
@@ -33,6 +41,9 @@ Metrics MetricsAccumulator::finish(std::int64_t ticks, double dt, std::uint64_t 
   m.success = path_.complete();
   m.ticks_to_chain = m.subgoal_path.tick;
   m.ticks_to_opt1 = m.opt1_path.tick;
+  m.allocated = allocated_;
+  m.ticks_to_allocate = alloc_tick_;
+  if (allocated_ >= 0) m.resource_reduction_pct = 100.0 * (robots_ - allocated_) / robots_;
   if (m.subgoal_path.tick >= 0) m.subgoal_path_length_tu = to_tu(m.subgoal_path.length_m);
   if (m.opt1_path.tick >= 0) m.opt1_path_length_tu = to_tu(m.opt1_path.length_m);
   if (m.success) {

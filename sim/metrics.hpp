@@ -27,7 +27,12 @@ struct Metrics {
   double subgoal_path_length_tu = std::numeric_limits<double>::quiet_NaN();  ///< at T_chain
   double opt1_path_length_tu = std::numeric_limits<double>::quiet_NaN();     ///< at T_opt1
   int path_robots = 0;                                                       ///< robots in the final chain
-  PathSnapshot subgoal_path, opt1_path, final_path;                          ///< for pictures
+
+  // task allocation (SPEC §4.1, §4.3)
+  int allocated = -1;  ///< robots allocated, the founder included when it counts itself
+  double resource_reduction_pct = std::numeric_limits<double>::quiet_NaN();  ///< (N - allocated)/N x 100
+  std::int64_t ticks_to_allocate = -1;               ///< T_alloc: DONE first broadcast
+  PathSnapshot subgoal_path, opt1_path, final_path;  ///< for pictures
 };
 
 /// Accumulates per-tick observations; finish() fills the final fields.
@@ -51,6 +56,8 @@ class MetricsAccumulator {
   double distance_m_ = 0;
   bool watch_path_ = false;
   PathObserver path_;
+  int allocated_ = -1;
+  std::int64_t alloc_tick_ = -1;
 };
 
 }  // namespace swarmpath::sim

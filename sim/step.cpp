@@ -40,7 +40,7 @@ void sense_all(const Scenario& s, const Params& p, World& w) {
     w.blob_begin[i] = w.blobs.size();
     if (w.needs.camera) sense_camera(view, id, w.blobs);
     w.rab_begin[i] = w.rab_inbox.size();
-    if (w.needs.rab) sense_rab(view, id, w.rab_inbox);
+    if (w.needs.rab && robot_listens(w.mode, w.memory[i])) sense_rab(view, id, w.rab_inbox);
   }
   w.blob_begin[n] = w.blobs.size();
   w.rab_begin[n] = w.rab_inbox.size();

@@ -109,6 +109,11 @@ World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t se
 
 World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t seed,
                  std::span<const Pose> start) {
+  if (mode == Mode::kTaskAllocation && start.size() > static_cast<std::size_t>(kMaxTaRobots)) {
+    throw ConfigError(s.file, 0, "deployment.robots",
+                      "task allocation addresses robots with one byte (SPEC §2.6 framing): at most " +
+                          std::to_string(kMaxTaRobots) + " robots, got " + std::to_string(start.size()));
+  }
   World w;
   w.mode = mode;
   w.seed = seed;
@@ -133,6 +138,8 @@ World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t se
   for (std::size_t i = 0; i < n; ++i) {
     w.physics->add_robot(start[i].p, start[i].yaw());
     w.memory.push_back(init_memory(mode, static_cast<int>(i), start[i], s.nest, p, seed));
+    w.memory.back().env_class = static_cast<std::uint8_t>(s.env_class);
+    w.memory.back().swarm = static_cast<int>(n);
   }
   // poses as Box2D stores them (single precision), so that tick 0 senses what physics holds
   w.physics->read_poses(w.poses);

@@ -82,16 +82,19 @@ Vec2 follow_edge(const Percept& in, int side) {
   return (1.0 / norm(v)) * v;
 }
 
-Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest) {
+Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest,
+              double trap_ticks, const Vec2* field_point) {
+  const double trap = trap_ticks > 0.0 ? trap_ticks : p.t_trap;
   // trapped by the field with a trail to retrace: switch to the trail for the rest of the way
+  // (checked one tick ahead of nav_update, which would start edge following at T_trap)
   if (!nav.on_trail && nav.following == 0 && !trail.empty() && p.t_trap > 0 &&
-      static_cast<double>(nav.stalled) >= p.t_trap) {
+      static_cast<double>(nav.stalled) + 1.0 >= trap) {
     nav.on_trail = true;
     trail.start_home(in.pose.p);
     nav.stalled = 0;
     nav.best = -1e18;
   }
-  if (!nav.on_trail) return nav_toward(in, p, nav, rng, nest);
+  if (!nav.on_trail) return nav_toward(in, p, nav, rng, field_point != nullptr ? *field_point : nest);
   Vec2 crumb = nest;
   const bool more = trail.next_home(in.pose.p, crumb);
   // progress along the trail: minus what is left of it (then of the last leg to the nest)

@@ -53,6 +53,9 @@ Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Ve
 
 /// Toward the nest: the potential field; once the field has trapped the robot, its breadcrumb
 /// trail (when it has one); the edge while following.
-Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest);
+/// `trap_ticks` (default T_trap) is how long the field may make no progress before the trail;
+/// the field pulls toward `field_point` (default: the nest itself).
+Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest,
+              double trap_ticks = -1.0, const Vec2* field_point = nullptr);
 
 }  // namespace swarmpath::sim

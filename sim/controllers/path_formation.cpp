@@ -145,6 +145,7 @@ Vec2 local_cm(const Pose& pose, const Tracked& t) {
 // ---- guards, named after the paper's conditions ----
 
 bool found_goal_or_subgoal(const PfContext& c) {  // row 1, label c
+  if (c.m.scout) return false;  // a TA scout that finds the goal becomes the founder instead
   return (c.sight.goal != nullptr && c.sight.goal->distance_cm <= c.p.d_detect) ||
          c.sight.red_near != nullptr;
 }
@@ -165,7 +166,11 @@ bool resting_time_over(const PfContext& c) {  // row 4, label i
 }
 
 bool nestward_of_target(const PfContext& c, Vec2 at) {
-  return c.on_trail || dist(at, c.nest) < dist(c.m.target.last_seen, c.nest);
+  // at least d_sub/2 nearer the nest than the target (on its trail: along the trail, which may
+  // wind round obstacles), so that every new subgoal extends the chain toward the nest
+  const double margin = 0.5 * c.p.d_sub * kCm;
+  if (c.on_trail) return c.trail_left <= c.m.trail_at_target - margin;
+  return dist(at, c.nest) <= dist(c.m.target.last_seen, c.nest) - margin;
 }
 
 bool found_subgoal_nearer_nest(const PfContext& c) {  // row 5r, label c while forming
@@ -250,10 +255,7 @@ void take_target(const PfContext& c, PfMemory& m) {  // row 1: the goal if in ra
 
 void target_becomes_parent(const PfContext&, PfMemory& m) { m.parent = m.target; }
 
-void retarget(const PfContext& c, PfMemory& m) {
-  m.target = follow(*c.sight.red_nearer_nest, c.in.pose);
-  m.target_reached = c.sight.red_nearer_nest->distance_cm <= c.p.d_detect;  // else walk to it first
-}
+void retarget(const PfContext& c, PfMemory& m) { m.target = follow(*c.sight.red_nearer_nest, c.in.pose); }
 
 void grow_budget(const PfContext& c, PfMemory& m) {  // row 4: "increase the minimum exploring time"
   m.t_explore = std::min((m.t_explore + c.p.dt_explore) * c.p.g_explore, c.p.t_explore_max);
@@ -353,7 +355,7 @@ Command go_to_nest(const Percept& in, const Params& p, RobotMemory& mem, const P
 }
 
 // SUBGOAL_FORMING (LED white): back off toward the nest from the target; a robot that re-targeted
-// to a subgoal nearer the nest first walks to it (the chain's tip), then backs off from there
+// to a subgoal nearer the nest (the chain's new tip) backs off from that one at once
 Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
   if (mem.pf.to_view_edge) {  // back to where the target was last in view (row 7a)
     const Vec2 back = (1.0 / kCm) * in.pose.to_local(mem.pf.last_saw_target - in.pose.p);
@@ -362,12 +364,19 @@ Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const
     return drive(p, mem, (std::min(p.v_max, len) / len) * back, PfState::kSubgoalForming);
   }
   if (mem.pf.target_reached) {
-    // back off along the robot's own way from the nest: a route it knows is passable
-    if (!mem.nav.on_trail && !mem.trail.empty()) {
-      mem.nav.on_trail = true;
-      mem.trail.start_home(in.pose.p);
-    }
-    return go_to_nest(in, p, mem, sight, PfState::kSubgoalForming);
+    // back off to the nest side of the target: the point d_sub (+5 cm) from it toward the nest,
+    // "in between the starting point and the detected subgoal"; once the field stalls (a quarter
+    // of T_trap), along the robot's own way from the nest, a route it knows is passable
+    const bool was_on_trail = mem.nav.on_trail;
+    const Vec2 tgt = mem.pf.target.last_seen;
+    const Vec2 to_nest = mem.nest - tgt;
+    const double len = norm(to_nest);
+    const Vec2 spot = len > 0.0 ? tgt + ((p.d_sub + 5.0) * kCm / len) * to_nest : mem.nest;
+    const Avoidance avoid = diffusion(in.proximity, p);
+    const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest, 0.25 * p.t_trap, &spot);
+    if (mem.nav.on_trail && !was_on_trail) mem.pf.trail_at_target = mem.trail.remaining(in.pose.p);
+    const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
+    return drive(p, mem, p.v_max * v, PfState::kSubgoalForming);
   }
   const Avoidance avoid = diffusion(in.proximity, p);
   const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, mem.pf.target.last_seen);
@@ -518,7 +527,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   PfSight sight;
   pf_perceive(in, p, mem.nest, m, sight);
   // transitions happen only here, via the table
-  const PfContext c{in, p, m, sight, mem.nest, mem.nav.on_trail};
+  const PfContext c{in, p, m, sight, mem.nest, mem.nav.on_trail, mem.trail.remaining(in.pose.p)};
   if (const PfTransition* fired = pf_transition(c, m)) {
     nav_reset(mem.nav);
     m.explore_blocked = false;

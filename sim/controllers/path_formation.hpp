@@ -51,6 +51,7 @@ struct Tracked {
 /// The path-formation memory of one robot.
 struct PfMemory {
   PfState state = PfState::kExploring;
+  bool scout = false;            ///< task allocation's scout: explores, but row 1 is the TA's (founder)
   std::int64_t t_state = 0;      ///< ticks in the current state
   double t_explore = 1000;       ///< T_explore, the exploration budget [ticks]
   std::int64_t nest_ticks = 0;   ///< consecutive ticks within R_nest_reach while returning (row 3)
@@ -58,6 +59,7 @@ struct PfMemory {
   Tracked target;                ///< what the robot backs off from while forming
   bool target_reached = true;    ///< forming: has been within d_detect of the target (row 5 needs it)
   Vec2 last_saw_target;          ///< forming: the robot's position when it last saw the target [m]
+  double trail_at_target = 0;    ///< forming: trail left home when it began backing off [m]
   bool to_view_edge = false;     ///< forming: target lost, going back to last_saw_target (row 7a)
   Tracked parent;                ///< goal-side reference (the goal beacon or a robot)
   Tracked child;                 ///< nest-side reference (the nest beacon or a robot)
@@ -66,10 +68,10 @@ struct PfMemory {
   Vec2 sighting;                 ///< where the goal or a RED subgoal was last seen [m]
   bool has_sighting = false;
   bool sighted_this_trip = false;
-  bool to_sighting = false;      ///< exploring: first travelling back to the sighting (site fidelity)
+  bool to_sighting = false;       ///< exploring: first travelling back to the sighting (site fidelity)
   std::int64_t travel_ticks = 0;  ///< exploring: ticks spent travelling to the sighting (not budget)
-  std::uint8_t last_row = 0;     ///< the table row that fired last (index + 1; 0 = none)
-  std::int64_t fired_tick = -1;  ///< the tick it fired
+  std::uint8_t last_row = 0;      ///< the table row that fired last (index + 1; 0 = none)
+  std::int64_t fired_tick = -1;   ///< the tick it fired
 };
 
 /// What the robot makes of this tick's camera blobs (computed once, before the guards).
@@ -94,6 +96,7 @@ struct PfContext {
   const PfSight& sight;
   Vec2 nest;              ///< the nest's global position [m]
   bool on_trail = false;  ///< heading home along its own breadcrumbs
+  double trail_left = 0;  ///< what is left of that trail [m]
 };
 
 using PfGuard = bool (*)(const PfContext&);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The path-formation table (SPEC §2.3): one test per row, each a reading that meets the row's
 // guard and the state it must lead to; the table's structure; and the optimisation geometry.
+#include "sim/controllers/path_formation.hpp"
+
 #include <cmath>
 #include <set>
 #include <string>
@@ -9,7 +11,6 @@
 
 #include "sim/controller.hpp"
 #include "sim/controllers/alignment.hpp"
-#include "sim/controllers/path_formation.hpp"
 
 namespace swarmpath::sim {
 namespace {
@@ -51,7 +52,7 @@ std::string fire(PfMemory& m, const Reading& r, const Params& p = {}) {
   const Percept in = r.percept();
   PfSight sight;
   pf_perceive(in, p, kNest, m, sight);
-  const PfContext c{in, p, m, sight, kNest, false};
+  const PfContext c{in, p, m, sight, kNest, false, 0.0};
   const PfTransition* row = pf_transition(c, m);
   return row ? std::string(row->row) : std::string();
 }
@@ -143,7 +144,7 @@ TEST(PfTable, Row5rRetargetsToTheSubgoalNearerTheNest) {  // label c while formi
   EXPECT_EQ(fire(m, r), "#5r");
   EXPECT_EQ(m.state, PfState::kSubgoalForming);
   EXPECT_EQ(m.target.id, 8);
-  EXPECT_FALSE(m.target_reached);  // walks to it first
+  EXPECT_TRUE(m.target_reached);  // backs off from the new tip at once, no walk to it
 }
 
 TEST(PfTable, Row6aReachedTheNestBeforeDsub) {
@@ -178,7 +179,7 @@ TEST(PfTable, Row7aStopsWhereTheTargetWasLastInView) {
 
 TEST(PfTable, Row7TargetLostInTheVisibleRange) {  // label f
   PfMemory m = forming({1.05, 0.0});
-  m.target.unseen = 2;  // lost after this tick's miss (T_lost = 3)
+  m.target.unseen = 2;             // lost after this tick's miss (T_lost = 3)
   m.last_saw_target = {0.9, 0.0};  // lost while still close to it: no view-edge stop
   EXPECT_EQ(fire(m, Reading{}), "#7");
   EXPECT_EQ(m.state, PfState::kRecovery);

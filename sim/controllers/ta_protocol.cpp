@@ -1,0 +1,126 @@
+// SPDX-License-Identifier: MIT
+#include "ta_protocol.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace swarmpath::sim {
+
+RabPayload encode(const TaMessage& m) {
+  RabPayload p{};
+  p[0] = m.id;
+  p[1] = m.state;
+  p[2] = m.parent;
+  p[3] = m.flags;
+  p[4] = static_cast<std::uint8_t>(m.type);
+  p[5] = m.dest;
+  p[6] = static_cast<std::uint8_t>(m.remaining >> 8);
+  p[7] = static_cast<std::uint8_t>(m.remaining & 0xff);
+  p[8] = static_cast<std::uint8_t>(m.t_founder_ds >> 8);
+  p[9] = static_cast<std::uint8_t>(m.t_founder_ds & 0xff);
+  return p;
+}
+
+TaMessage decode(const RabPayload& p) {
+  TaMessage m;
+  m.id = p[0];
+  m.state = p[1];
+  m.parent = p[2];
+  m.flags = p[3];
+  m.type = p[4] <= 4 ? static_cast<MsgType>(p[4]) : MsgType::kNone;
+  m.dest = p[5];
+  m.remaining = static_cast<std::uint16_t>((p[6] << 8) | p[7]);
+  m.t_founder_ds = static_cast<std::uint16_t>((p[8] << 8) | p[9]);
+  return m;
+}
+
+FounderProtocol start_founder(int robots) {
+  FounderProtocol f;
+  f.remaining = std::max(0, robots);
+  return f;
+}
+
+TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_founder_ds,
+                       std::span<const RabMessage> inbox) {
+  TaMessage out;
+  out.id = my_id;
+  out.t_founder_ds = t_founder_ds;
+  if (f.remaining == 0) {
+    out.type = MsgType::kDone;
+    out.flags = kFlagAllocDone;
+    ++f.done_ticks;
+    return out;
+  }
+  // the nearest JOIN addressed to me; ties go to the smaller id
+  const RabMessage* best = nullptr;
+  std::uint8_t best_id = 0;
+  for (const RabMessage& r : inbox) {
+    const TaMessage m = decode(r.data);
+    if (m.type != MsgType::kJoin || m.dest != my_id) continue;
+    if (best == nullptr || r.range_cm < best->range_cm || (r.range_cm == best->range_cm && m.id < best_id)) {
+      best = &r;
+      best_id = m.id;
+    }
+  }
+  if (best == nullptr) {
+    out.type = MsgType::kRequest;
+  } else {
+    out.type = MsgType::kAck;
+    out.dest = best_id;
+    if (!f.is_acked(best_id)) {  // a repeated JOIN (its ACK was lost) is answered, not counted
+      f.acked[best_id / 64] |= std::uint64_t{1} << (best_id % 64);
+      ++f.acks;
+      --f.remaining;
+    }
+  }
+  out.remaining = static_cast<std::uint16_t>(f.remaining);
+  return out;
+}
+
+std::uint8_t smaller_founder_heard(std::uint8_t my_id, std::span<const RabMessage> inbox) {
+  std::uint8_t best = kBroadcastId;
+  for (const RabMessage& r : inbox) {
+    const TaMessage m = decode(r.data);
+    const bool founder = m.type == MsgType::kRequest || m.type == MsgType::kAck;
+    if (founder && m.id < my_id && m.id < best) best = m.id;
+  }
+  return best;
+}
+
+DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox) {
+  DmTick out;
+  std::uint8_t founder = kBroadcastId;
+  bool done = false;
+  for (const RabMessage& r : inbox) {
+    const TaMessage m = decode(r.data);
+    if (m.type == MsgType::kAck && m.dest == my_id) {
+      out.decision = DmDecision::kGo;
+      out.t_founder_ds = m.t_founder_ds;
+      return out;
+    }
+    if (m.type == MsgType::kDone || m.alloc_done()) done = true;
+    if ((m.type == MsgType::kRequest || m.type == MsgType::kAck) && m.id < founder) {
+      founder = m.id;
+      out.t_founder_ds = m.t_founder_ds;
+    }
+  }
+  if (done) {
+    out.decision = DmDecision::kRest;
+    return out;
+  }
+  if (founder != kBroadcastId) {
+    out.send.id = my_id;
+    out.send.type = MsgType::kJoin;
+    out.send.dest = founder;
+  }
+  return out;
+}
+
+int robots_needed(double t_seconds, double speed_cm_s, double r_vis_cm, double delta, int n_min, int swarm) {
+  const double l = speed_cm_s * t_seconds;  // Eq. (1)
+  const double n0 = l / r_vis_cm;           // Eq. (2)
+  const int n = static_cast<int>(std::ceil(n0 + delta - 1e-9));  // Eq. (3), rounded up
+  return std::clamp(n, n_min, swarm);
+}
+
+}  // namespace swarmpath::sim

@@ -1,0 +1,85 @@
+// SPDX-License-Identifier: MIT
+// The task-allocation protocol over the range-and-bearing medium (paper, "Local Communication
+// Protocol"; SPEC §2.6): the goal founder broadcasts REQUEST, decision makers answer JOIN, the
+// founder ACKs one JOIN per tick (the nearest) and counts down the robots it still needs, then
+// broadcasts DONE. Pure functions of the messages heard, so that the protocol can be tested with
+// a scripted medium that loses or delays messages.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <span>
+
+#include "sim/percept.hpp"
+
+namespace swarmpath::sim {
+
+enum class MsgType : std::uint8_t { kNone = 0, kRequest = 1, kJoin = 2, kAck = 3, kDone = 4 };
+
+inline constexpr std::uint8_t kBroadcastId = 255;  ///< destination "all" / parent "none"
+inline constexpr std::uint8_t kFlagAllocDone = 1;  ///< flags bit 0: the allocation is over
+inline constexpr int kMaxTaRobots = 254;           ///< ids travel in one byte
+
+/// SPEC §2.6 framing of the 10-byte payload: 0 id; 1 state; 2 parent id (255 none); 3 flags
+/// (bit 0 ALLOC_DONE); 4 message type; 5 destination id (255 all); 6-7 remaining; 8-9 t_founder/10.
+struct TaMessage {
+  std::uint8_t id = 0;
+  std::uint8_t state = 0;
+  std::uint8_t parent = kBroadcastId;
+  std::uint8_t flags = 0;
+  MsgType type = MsgType::kNone;
+  std::uint8_t dest = kBroadcastId;
+  std::uint16_t remaining = 0;
+  std::uint16_t t_founder_ds = 0;  ///< the founder's t [s] (its t in ticks / 10, SPEC "t_founder/10")
+
+  bool alloc_done() const { return (flags & kFlagAllocDone) != 0; }
+};
+
+RabPayload encode(const TaMessage& m);
+TaMessage decode(const RabPayload& payload);
+
+/// The founder's side. One tick at a time: it reads the JOINs addressed to it and returns what it
+/// broadcasts.
+struct FounderProtocol {
+  int remaining = 0;   ///< ACKs still to send
+  int acks = 0;        ///< distinct robots ACKed so far (the allocation, the founder aside)
+  int done_ticks = 0;  ///< ticks DONE has been broadcast
+  std::array<std::uint64_t, 4> acked{};  ///< ids ACKed (a robot is never counted twice)
+
+  bool is_acked(std::uint8_t id) const { return (acked[id / 64] >> (id % 64)) & 1u; }
+
+  /// Finished: every robot ACKed and DONE broadcast for `done_for` ticks.
+  bool finished(int done_for) const { return remaining == 0 && done_ticks >= done_for; }
+};
+
+/// Starts a founder that needs `robots` more robots (n minus itself when it counts itself).
+FounderProtocol start_founder(int robots);
+
+/// One founder tick: the nearest JOIN addressed to it (ties: the smaller id) gets the ACK. A JOIN
+/// from a robot already ACKed (its ACK was lost) is ACKed again without counting it again.
+/// Without a JOIN it repeats REQUEST; once no robot is needed, it broadcasts DONE.
+TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_founder_ds,
+                       std::span<const RabMessage> inbox);
+
+/// What a decision maker does this tick.
+enum class DmDecision : std::uint8_t { kWait, kGo, kRest };
+
+struct DmTick {
+  DmDecision decision = DmDecision::kWait;
+  TaMessage send;              ///< JOIN when a founder is requesting
+  std::uint16_t t_founder_ds = 0;  ///< the founder's t, when heard
+};
+
+/// One decision-maker tick: an ACK addressed to it -> go (INITIATE_TASK); DONE or ALLOC_DONE
+/// heard -> rest; a founder requesting (REQUEST, or ACKs to others) -> JOIN the founder with the
+/// smallest id.
+DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox);
+
+/// The founder that wins among duplicates: a REQUEST (or ACK) heard from a founder with a smaller
+/// id than `my_id` (SPEC §2.6 T8); returns that id or kBroadcastId.
+std::uint8_t smaller_founder_heard(std::uint8_t my_id, std::span<const RabMessage> inbox);
+
+/// SPEC §2.7: n = ceil(l/v + delta) clamped to [n_min, N], l = s t [cm], v = R_vis [cm].
+int robots_needed(double t_seconds, double speed_cm_s, double r_vis_cm, double delta, int n_min, int swarm);
+
+}  // namespace swarmpath::sim

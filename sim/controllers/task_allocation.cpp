@@ -1,0 +1,273 @@
+// SPDX-License-Identifier: MIT
+#include "task_allocation.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "navigation.hpp"
+#include "path_formation.hpp"
+#include "sim/controller.hpp"
+#include "sim/motion.hpp"
+
+namespace swarmpath::sim {
+
+std::string_view to_string(TaState s) {
+  switch (s) {
+    case TaState::kScout:
+      return "scout";
+    case TaState::kGoalFounder:
+      return "goal_founder";
+    case TaState::kDecisionMaker:
+      return "decision_maker";
+    case TaState::kPathFormation:
+      return "path_formation";
+    case TaState::kRestingTask:
+      return "resting_task";
+  }
+  return "?";
+}
+
+double delta_for(const Params& p, std::uint8_t env_class) {
+  switch (env_class) {
+    case 0:
+      return p.delta_open;
+    case 1:
+      return p.delta_obstacle;
+    default:
+      return p.delta_complex;
+  }
+}
+
+void ta_init(RobotMemory& mem, const Params& p) {
+  pf_init(mem.pf, p);
+  mem.pf.scout = true;
+  mem.ta = TaMemory{};
+}
+
+namespace {
+
+bool is_path_robot_colour(const Blob& b) {  // SPEC §2.6 T7
+  if (b.emitter < 0) return false;          // the nest beacon is blue too
+  switch (b.color) {
+    case Led::kWhite:
+    case Led::kRed:
+    case Led::kMagenta:
+    case Led::kBlue:
+    case Led::kPurple:
+    case Led::kBrown:
+    case Led::kOrange:
+      return true;
+    default:
+      return false;
+  }
+}
+
+// ---- guards ----
+
+bool found_the_goal(const TaContext& c) {  // T2, TA c: the goal within d_detect, no ALLOC_DONE heard
+  return c.sight.goal_found && !c.sight.alloc_done_heard;
+}
+
+bool allocation_over(const TaContext& c) {  // T7, TA d: late arrivals
+  return c.sight.alloc_done_heard || c.sight.path_colour_seen;
+}
+
+bool learned_of_the_goal(const TaContext& c) {  // T3, TA f
+  return c.sight.founder_or_dm_seen || c.sight.request_heard;
+}
+
+bool smaller_founder(const TaContext& c) {  // T8 [R]: duplicate founders
+  return c.sight.smaller_founder != kBroadcastId;
+}
+
+bool late_founder(const TaContext& c) {  // a founder that hears ALLOC_DONE before it allocates
+  return !c.m.protocol_started && c.sight.alloc_done_heard;
+}
+
+bool founder_done_and_counts_self(const TaContext& c) {  // T9
+  return c.m.protocol_started && c.m.protocol.finished(static_cast<int>(c.p.t_done)) && c.p.founder_counts_self;
+}
+
+bool founder_done(const TaContext& c) {  // T9, the founder not counting itself
+  return c.m.protocol_started && c.m.protocol.finished(static_cast<int>(c.p.t_done));
+}
+
+bool acked(const TaContext& c) { return c.sight.dm.decision == DmDecision::kGo; }  // T5, TA e
+
+bool told_to_rest(const TaContext& c) {  // T6, TA d
+  return c.sight.dm.decision == DmDecision::kRest || static_cast<double>(c.m.waited) >= c.p.t_dm_wait;
+}
+
+// ---- actions ----
+
+void become_founder(const TaContext& c, RobotMemory& mem) {
+  // t: the founder's current minimum exploring time (default) or the ticks of this trip [s]
+  const double t_ticks = c.p.t_source == TSource::kBudget ? mem.pf.t_explore : static_cast<double>(mem.pf.t_state);
+  mem.ta.t_founder_s = t_ticks / 10.0;
+  mem.ta.n = robots_needed(mem.ta.t_founder_s, c.p.v_max, c.p.r_vis, delta_for(c.p, mem.env_class),
+                           static_cast<int>(c.p.n_min), c.swarm);
+}
+
+// INITIATE_TASK: path formation, exploring for kappa t_founder (SPEC §2.7)
+void start_path_formation(const TaContext& c, RobotMemory& mem, double t_founder_s) {
+  const PfMemory keep = mem.pf;  // the founder keeps its sighting of the goal (site fidelity)
+  pf_init(mem.pf, c.p);
+  mem.pf.t_explore = std::max(1.0, c.p.kappa * t_founder_s * 10.0);
+  mem.pf.sighting = keep.sighting;
+  mem.pf.has_sighting = keep.has_sighting;
+  mem.pf.to_sighting = c.p.site_fidelity && keep.has_sighting;
+  mem.trail.reset(c.in.pose.p);
+}
+
+void founder_initiates(const TaContext& c, RobotMemory& mem) { start_path_formation(c, mem, mem.ta.t_founder_s); }
+
+void dm_initiates(const TaContext& c, RobotMemory& mem) {
+  start_path_formation(c, mem, static_cast<double>(c.sight.dm.t_founder_ds));
+}
+
+// clang-format off
+// SPEC §2.6, in its order; T1 (explore / return / rest) runs inside the scout's path-formation
+// states, T4 (the founder at the nest runs the protocol) inside the founder's behaviour.
+const std::array<TaTransition, 9> kTable{{
+  {TaState::kScout,         found_the_goal,               TaState::kGoalFounder,   become_founder,    "T2",  "c"},
+  {TaState::kScout,         allocation_over,              TaState::kRestingTask,   nullptr,           "T7",  "d"},
+  {TaState::kScout,         learned_of_the_goal,          TaState::kDecisionMaker, nullptr,           "T3",  "f"},
+  {TaState::kDecisionMaker, acked,                        TaState::kPathFormation, dm_initiates,      "T5",  "e"},
+  {TaState::kDecisionMaker, told_to_rest,                 TaState::kRestingTask,   nullptr,           "T6",  "d"},
+  {TaState::kGoalFounder,   smaller_founder,              TaState::kDecisionMaker, nullptr,           "T8",  ""},
+  {TaState::kGoalFounder,   late_founder,                 TaState::kRestingTask,   nullptr,           "T7f", "d"},
+  {TaState::kGoalFounder,   founder_done_and_counts_self, TaState::kPathFormation, founder_initiates, "T9",  "e"},
+  {TaState::kGoalFounder,   founder_done,                 TaState::kRestingTask,   nullptr,           "T9r", "d"},
+}};
+// clang-format on
+
+// To `point` (the nest: along the robot's trail once the field traps it) and stop within reach.
+Command drive_to(const Percept& in, const Params& p, RobotMemory& mem, Vec2 point, double stop_within_cm, Led led) {
+  Command cmd;
+  cmd.led = led;
+  if (100.0 * dist(in.pose.p, point) <= stop_within_cm) return cmd;
+  const Avoidance avoid = diffusion(in.proximity, p);
+  const Vec2 f = point == mem.nest ? nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest)
+                                   : nav_toward(in, p, mem.nav, mem.rng, point);
+  const Vec2 v = p.v_max * ((mem.nav.following > 0 ? Vec2{} : avoid.direction) + f);
+  const WheelSpeeds w = wheels_from_vector(v, p, mem.turn);
+  cmd.left_cm_s = w.left_cm_s;
+  cmd.right_cm_s = w.right_cm_s;
+  return cmd;
+}
+
+bool joined(std::uint8_t founder, std::span<const RabMessage> inbox) {
+  for (const RabMessage& r : inbox) {
+    const TaMessage m = decode(r.data);
+    if (m.type == MsgType::kJoin && m.dest == founder) return true;
+  }
+  return false;
+}
+
+Command say(Command cmd, const TaMessage& m) {
+  cmd.rab_send = true;
+  cmd.rab = encode(m);
+  return cmd;
+}
+
+TaMessage alloc_done_flag(std::uint8_t id, TaState s) {
+  TaMessage m;
+  m.id = id;
+  m.state = static_cast<std::uint8_t>(s);
+  m.flags = kFlagAllocDone;
+  return m;
+}
+
+}  // namespace
+
+std::span<const TaTransition> ta_transitions() { return kTable; }
+
+void ta_perceive(const Percept& in, const Params& p, Vec2 nest, TaSight& sight) {
+  sight = TaSight{};
+  sight.nest_distance_cm = 100.0 * dist(in.pose.p, nest);
+  for (const Blob& b : in.blobs) {
+    if (b.emitter == kGoalEmitter && b.distance_cm <= p.d_detect) sight.goal_found = true;
+    if (b.emitter >= 0 && (b.color == Led::kCyan || b.color == Led::kGray80)) sight.founder_or_dm_seen = true;
+    if (is_path_robot_colour(b)) sight.path_colour_seen = true;
+  }
+  const auto id = static_cast<std::uint8_t>(in.id);
+  for (const RabMessage& r : in.rab) {
+    const TaMessage m = decode(r.data);
+    if (m.type == MsgType::kRequest || m.type == MsgType::kAck) sight.request_heard = true;
+    if (m.type == MsgType::kDone || m.alloc_done()) sight.alloc_done_heard = true;
+  }
+  sight.smaller_founder = smaller_founder_heard(id, in.rab);
+  sight.dm = decision_maker_tick(id, in.rab);
+}
+
+const TaTransition* ta_transition(const TaContext& c, RobotMemory& mem) {
+  for (std::size_t i = 0; i < kTable.size(); ++i) {
+    const TaTransition& row = kTable[i];
+    if (row.from != mem.ta.state || !row.when(c)) continue;
+    if (row.act != nullptr) row.act(c, mem);
+    mem.ta.state = row.to;
+    mem.ta.t_state = 0;
+    mem.ta.waited = 0;
+    mem.ta.last_row = static_cast<std::uint8_t>(i + 1);
+    mem.ta.fired_tick = c.in.tick;
+    return &row;
+  }
+  return nullptr;
+}
+
+Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& mem, int swarm) {
+  TaMemory& m = mem.ta;
+  TaSight sight;
+  ta_perceive(in, p, mem.nest, sight);
+  const TaContext c{in, p, m, sight, swarm};
+  if (ta_transition(c, mem) != nullptr) nav_reset(mem.nav);
+  ++m.t_state;
+  const auto id = static_cast<std::uint8_t>(in.id);
+  const bool at_nest = sight.nest_distance_cm <= p.r_nest_reach;
+
+  Command cmd;
+  switch (m.state) {
+    case TaState::kScout:  // exploring, returning, resting: path formation's rows #2-#4 (TA a, b)
+      cmd = path_formation_step(in, p, mem);
+      break;
+    case TaState::kPathFormation:  // allocated (TA e): path formation
+      cmd = path_formation_step(in, p, mem);
+      break;
+    case TaState::kGoalFounder:
+      // back to the nest (TA c / PF k); there it runs the protocol (T4)
+      cmd = drive_to(in, p, mem, mem.nest, 0.5 * p.r_nest_reach, Led::kCyan);
+      if (at_nest && !m.protocol_started) {
+        m.protocol_started = true;
+        m.protocol = start_founder(m.n - (p.founder_counts_self ? 1 : 0));
+      }
+      if (m.protocol_started) {
+        // no JOIN for T_dm_wait ticks: nobody is left to ask; allocate what it has [R]
+        m.waited = m.protocol.remaining > 0 && !joined(id, in.rab) ? m.waited + 1 : 0;
+        if (static_cast<double>(m.waited) >= p.t_dm_wait) m.protocol.remaining = 0;
+        const auto t = static_cast<std::uint16_t>(std::min(65535.0, std::round(m.t_founder_s)));
+        const TaMessage msg = founder_tick(m.protocol, id, t, in.rab);
+        if (msg.type == MsgType::kDone && m.protocol.done_ticks == 1) {
+          m.alloc_done_tick = in.tick;
+          m.allocated = m.protocol.acks + (p.founder_counts_self ? 1 : 0);
+        }
+        cmd = say(cmd, msg);
+      }
+      break;
+    case TaState::kDecisionMaker:
+      // gather at the nest; answer a requesting founder with JOIN
+      cmd = drive_to(in, p, mem, mem.nest, 0.5 * p.r_nest_reach, Led::kGray80);
+      m.waited = (at_nest && !sight.request_heard) ? m.waited + 1 : 0;
+      if (sight.dm.send.type == MsgType::kJoin) cmd = say(cmd, sight.dm.send);
+      break;
+    case TaState::kRestingTask:
+      // back to its own deployment point with the field of Eq. (4)-(5), then rest, LEDs off
+      cmd = drive_to(in, p, mem, mem.start, p.d_arrive, Led::kBlack);
+      m.arrived = m.arrived || 100.0 * dist(in.pose.p, mem.start) <= p.d_arrive;
+      cmd = say(cmd, alloc_done_flag(id, m.state));
+      break;
+  }
+  mem.state = static_cast<std::uint8_t>(static_cast<int>(m.state) * 16 + static_cast<int>(mem.pf.state));
+  return cmd;
+}
+
+}  // namespace swarmpath::sim

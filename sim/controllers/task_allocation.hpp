@@ -1,0 +1,103 @@
+// SPDX-License-Identifier: MIT
+// The task-allocation controller (paper, "Task allocation model" and "Local Communication
+// Protocol"; SPEC §2.6-2.7): scouts explore; the scout that finds the goal becomes the goal
+// founder, computes n = l/v + delta from its exploring time, returns to the nest and allocates n
+// robots over the range-and-bearing medium; the allocated robots run path formation, the others
+// go back to their deployment points and rest.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <string_view>
+
+#include "sim/led.hpp"
+#include "sim/params.hpp"
+#include "sim/percept.hpp"
+#include "ta_protocol.hpp"
+
+namespace swarmpath::sim {
+
+struct RobotMemory;
+
+/// SPEC §2.6's states (paper Table 3). A scout's own exploring, returning and resting run on the
+/// path-formation controller (its states and budget); INITIATE_TASK hands the robot to it.
+enum class TaState : std::uint8_t {
+  kScout,          ///< exploring / returning / resting, as path formation's rows #2-#4 (TA a, b)
+  kGoalFounder,    ///< CYAN: found the goal, back to the nest, runs the protocol (TA c, PF j/k)
+  kDecisionMaker,  ///< GRAY80: at the nest, answering the founder (TA f)
+  kPathFormation,  ///< allocated (INITIATE_TASK, TA e): the path-formation controller
+  kRestingTask,    ///< not allocated: back to its deployment point, LEDs off (TA d)
+};
+
+inline constexpr int kTaStateCount = 5;
+
+std::string_view to_string(TaState s);
+
+struct TaMemory {
+  TaState state = TaState::kScout;
+  std::int64_t t_state = 0;
+  // goal founder
+  double t_founder_s = 0;       ///< t of Eq. (1) [s]
+  int n = 0;                    ///< robots needed, Eq. (3) (the founder included when it counts itself)
+  bool protocol_started = false;
+  FounderProtocol protocol;
+  std::int64_t alloc_done_tick = -1;  ///< the tick it first broadcast DONE (T_alloc)
+  int allocated = -1;                 ///< then: robots allocated, itself included when it counts itself
+  // decision maker
+  std::int64_t waited = 0;      ///< ticks at the nest without hearing a REQUEST
+  // resting task
+  bool arrived = false;
+  std::uint8_t last_row = 0;    ///< the TA table row that fired last (index + 1)
+  std::int64_t fired_tick = -1;
+};
+
+/// What the robot hears and sees that the TA rows need.
+struct TaSight {
+  bool goal_found = false;       ///< goal beacon within d_detect
+  bool founder_or_dm_seen = false;  ///< a CYAN or GRAY80 robot within R_vis
+  bool path_colour_seen = false; ///< a robot in a path-formation state (SPEC T7)
+  bool request_heard = false;
+  bool alloc_done_heard = false;
+  std::uint8_t smaller_founder = kBroadcastId;
+  DmTick dm;                     ///< the decision maker's reading of the inbox
+  double nest_distance_cm = 0;
+};
+
+struct TaContext {
+  const Percept& in;
+  const Params& p;
+  const TaMemory& m;
+  const TaSight& sight;
+  int swarm;  ///< N, for the clamp of n
+};
+
+using TaGuard = bool (*)(const TaContext&);
+using TaAction = void (*)(const TaContext&, RobotMemory&);
+
+struct TaTransition {
+  TaState from;
+  TaGuard when;
+  TaState to;
+  TaAction act;
+  std::string_view row;    ///< SPEC §2.6 row (T2 ... T9)
+  std::string_view label;  ///< the paper's TA Table labels (a-f) or path-formation labels (j, k)
+};
+
+std::span<const TaTransition> ta_transitions();
+
+/// Reads the camera and the RAB inbox into `sight`.
+void ta_perceive(const Percept& in, const Params& p, Vec2 nest, TaSight& sight);
+
+/// Applies the first matching row (if any); returns it or nullptr.
+const TaTransition* ta_transition(const TaContext& c, RobotMemory& mem);
+
+/// One control step of a robot in task-allocation mode (N = `swarm` robots).
+Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& mem, int swarm);
+
+/// Sets up a scout.
+void ta_init(RobotMemory& mem, const Params& p);
+
+/// The delta of Eq. (3) for an environment class (SPEC §2.7, rows 33-35).
+double delta_for(const Params& p, std::uint8_t env_class);
+
+}  // namespace swarmpath::sim
