@@ -13,6 +13,7 @@
 #include "experiment.hpp"
 #include "sim/astar.hpp"
 #include "sim/config_error.hpp"
+#include "table_output.hpp"
 #include "table_report.hpp"
 
 namespace swarmpath::app {
@@ -41,7 +42,12 @@ void write_file(const std::string& path, const std::string& text) {
 int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
   if (o.seeds < 1 || o.seeds > 100000) throw sim::ConfigError("--seeds", 0, "", "must lie in [1, 100000]");
   if (o.robots.empty()) throw sim::ConfigError("--robots", 0, "", "give at least one robot count");
-  const sim::Mode mode = mode_from_option(o.mode);
+  const bool both = o.mode == "both";
+  const std::vector<sim::Mode> modes =
+      both ? std::vector<sim::Mode>{sim::Mode::kPathFormation, sim::Mode::kTaskAllocation}
+           : std::vector<sim::Mode>{mode_from_option(o.mode)};
+  if (!both && modes[0] == sim::Mode::kDiffusion)
+    throw sim::ConfigError("--mode", 0, "", "the table needs pf, ta or both (diffusion forms no path)");
   const sim::Params p = params_or_defaults(o.params);
   std::vector<sim::Scenario> scenarios;
   for (const std::string& f : scenario_files(o.scenarios))
@@ -56,7 +62,7 @@ int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
     astar8[s] = a.found ? sim::to_tu(a.length_m) : std::numeric_limits<double>::quiet_NaN();
   }
 
-  const std::vector<GridCase> grid = make_grid(scenarios.size(), o.robots, o.seeds, o.seed_base);
+  const std::vector<GridCase> grid = make_grid(scenarios.size(), o.robots, modes, o.seeds, o.seed_base);
   const bool tty = stderr_is_terminal();
   const Stopwatch clock;
   std::size_t last_line = 0;
@@ -72,21 +78,31 @@ int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
     }
   };
   err << "swarmpath table: " << scenarios.size() << " scenarios x " << o.robots.size() << " robot counts x "
-      << o.seeds << " seeds = " << grid.size() << " runs, mode " << sim::to_string(mode) << ", " << threads
-      << " threads\n";
-  const std::vector<GridRun> runs = run_grid(scenarios, grid, p, mode, threads, progress);
+      << modes.size() << " modes x " << o.seeds << " seeds = " << grid.size() << " runs, mode " << o.mode
+      << ", " << threads << " threads\n";
+  const std::vector<GridRun> runs = run_grid(scenarios, grid, p, threads, progress);
   if (tty) err << "\n";
   err << "  done in " << fixed(clock.seconds(), 1) << " s\n";
 
-  const TableReport report = summarise(scenarios, astar8, runs, std::string(sim::to_string(mode)));
-  if (!o.json.empty()) write_file(o.json, table_json(scenarios, astar8, runs, report).dump(2) + "\n");
+  std::ostringstream md;
+  nlohmann::ordered_json json;
+  if (both) {
+    const Comparison c = compare(
+        summarise(scenarios, astar8, runs_of(runs, sim::Mode::kPathFormation), sim::Mode::kPathFormation),
+        summarise(scenarios, astar8, runs_of(runs, sim::Mode::kTaskAllocation), sim::Mode::kTaskAllocation));
+    write_markdown(md, c);
+    if (!o.json.empty()) json = comparison_json(scenarios, astar8, runs, c);
+  } else {
+    const TableReport report = summarise(scenarios, astar8, runs, modes[0]);
+    write_markdown(md, report);
+    if (!o.json.empty()) json = table_json(scenarios, astar8, runs, report);
+  }
+  if (!o.json.empty()) write_file(o.json, json.dump(2) + "\n");
   if (!o.csv.empty()) {
     std::ostringstream csv;
-    write_runs_csv(csv, scenarios, astar8, runs, std::string(sim::to_string(mode)));
+    write_runs_csv(csv, scenarios, astar8, runs);
     write_file(o.csv, csv.str());
   }
-  std::ostringstream md;
-  write_markdown(md, report);
   if (!o.markdown.empty()) write_file(o.markdown, md.str());
   out << md.str();
   return kExitOk;
@@ -104,7 +120,10 @@ Runner add_table(CLI::App& app) {
   app.add_option("--seeds", o->seeds, "Seeds per (scenario, robots) case")->capture_default_str();
   app.add_option("--seed-base", o->seed_base, "The first seed; a case uses seed-base ... seed-base+seeds-1")
       ->capture_default_str();
-  app.add_option("--mode", o->mode, "Controller: pf (path formation)")->capture_default_str();
+  app.add_option("--mode", o->mode,
+                 "pf (path formation), ta (task allocation, then path formation) or both (each case with and "
+                 "without task allocation on the same seeds: the paper's whole table)")
+      ->capture_default_str();
   app.add_option("--params", o->params, "Params file (default: the paper's defaults)");
   app.add_option("--ticks", o->ticks, "Override every scenario's max_ticks");
   app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");

@@ -12,20 +12,30 @@
 
 namespace swarmpath::app {
 
-std::vector<GridCase> make_grid(std::size_t scenarios, const std::vector<int>& robots, int seeds,
-                                std::uint64_t seed_base) {
+std::vector<GridCase> make_grid(std::size_t scenarios, const std::vector<int>& robots,
+                                const std::vector<sim::Mode>& modes, int seeds, std::uint64_t seed_base) {
   std::vector<GridCase> grid;
   for (std::size_t s = 0; s < scenarios; ++s) {
     for (const int n : robots) {
-      for (int k = 0; k < seeds; ++k) grid.push_back({s, n, seed_base + static_cast<std::uint64_t>(k)});
+      for (const sim::Mode mode : modes) {
+        for (int k = 0; k < seeds; ++k)
+          grid.push_back({s, n, mode, seed_base + static_cast<std::uint64_t>(k)});
+      }
     }
   }
   return grid;
 }
 
+std::vector<GridRun> runs_of(const std::vector<GridRun>& runs, sim::Mode mode) {
+  std::vector<GridRun> out;
+  for (const GridRun& r : runs) {
+    if (r.c.mode == mode) out.push_back(r);
+  }
+  return out;
+}
+
 std::vector<GridRun> run_grid(const std::vector<sim::Scenario>& scenarios, const std::vector<GridCase>& grid,
-                              const sim::Params& p, sim::Mode mode, int threads,
-                              const GridProgress& progress) {
+                              const sim::Params& p, int threads, const GridProgress& progress) {
   // validate the robot counts first, so that errors come out before any work
   std::vector<sim::Scenario> cases;
   cases.reserve(grid.size());
@@ -37,7 +47,7 @@ std::vector<GridRun> run_grid(const std::vector<sim::Scenario>& scenarios, const
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (std::int64_t i = 0; i < n; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    out[k] = {grid[k], sim::evaluate(p, cases[k], mode, grid[k].seed)};  // slot k: thread-independent
+    out[k] = {grid[k], sim::evaluate(p, cases[k], grid[k].mode, grid[k].seed)};  // slot k: thread-independent
     const std::size_t finished = ++done;
     if (progress && omp_get_thread_num() == 0) progress(finished, grid.size());
   }

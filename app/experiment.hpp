@@ -19,6 +19,7 @@ namespace swarmpath::app {
 struct GridCase {
   std::size_t scenario = 0;  ///< index into the scenario list
   int robots = 0;
+  sim::Mode mode = sim::Mode::kPathFormation;
   std::uint64_t seed = 0;
 };
 
@@ -27,17 +28,20 @@ struct GridRun {
   sim::Metrics m;
 };
 
-/// Every (scenario, robots, seed) in that nesting order; seeds are seed_base .. seed_base+seeds-1.
-std::vector<GridCase> make_grid(std::size_t scenarios, const std::vector<int>& robots, int seeds,
-                                std::uint64_t seed_base);
+/// Every (scenario, robots, mode, seed) in that nesting order; seeds are seed_base ..
+/// seed_base+seeds-1, the same for every mode (paired runs).
+std::vector<GridCase> make_grid(std::size_t scenarios, const std::vector<int>& robots,
+                                const std::vector<sim::Mode>& modes, int seeds, std::uint64_t seed_base);
 
 /// Called from the calling thread after each finished run (done, total); may print progress.
 using GridProgress = std::function<void(std::size_t done, std::size_t total)>;
 
 /// Runs the grid on `threads` threads; results in grid order.
 std::vector<GridRun> run_grid(const std::vector<sim::Scenario>& scenarios, const std::vector<GridCase>& grid,
-                              const sim::Params& p, sim::Mode mode, int threads,
-                              const GridProgress& progress);
+                              const sim::Params& p, int threads, const GridProgress& progress);
+
+/// The runs of one mode, in grid order.
+std::vector<GridRun> runs_of(const std::vector<GridRun>& runs, sim::Mode mode);
 
 /// Scenario files: each path as given, or for a directory every *.toml in it, sorted by name.
 std::vector<std::string> scenario_files(const std::vector<std::string>& paths);

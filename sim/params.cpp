@@ -71,6 +71,7 @@ const std::array kTable{
   ParamInfo{ 0, "T_trap",         R, &P::t_trap,         100,  0,    2000,  10,   "",    "ticks", "ticks without progress toward the nest before edge following (0: never)", {}},
   ParamInfo{ 0, "T_follow",       R, &P::t_follow,       2000, 50,   5000,  50,   "",    "ticks", "longest edge following", {}},
   ParamInfo{ 0, "site_fidelity",  B, &P::site_fidelity,  1,    0,    1,     1,    "",    "",      "start an exploration trip toward where the goal or a subgoal was last seen", {}},
+  ParamInfo{ 0, "backoff_spot",   B, &P::backoff_spot,   0,    0,    1,     1,    "",    "",      "a forming robot backs off to the spot d_sub from its target toward the nest (false: along its own way from the nest)", {}},
 };
 
 // clang-format on

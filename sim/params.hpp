@@ -75,6 +75,8 @@ struct Params {
   double t_trap = 100;        ///< ticks without progress toward a point before edge following [ticks]
   double t_follow = 2000;     ///< longest edge following [ticks]
   bool site_fidelity = true;  ///< start an exploration trip toward the last goal/subgoal sighting
+  bool backoff_spot =
+      false;  ///< forming: back off to the spot d_sub from the target toward the nest (else along the trail)
 };
 
 enum class ParamType : std::uint8_t { kReal, kInteger, kBool, kChoice };

@@ -166,11 +166,8 @@ bool resting_time_over(const PfContext& c) {  // row 4, label i
 }
 
 bool nestward_of_target(const PfContext& c, Vec2 at) {
-  // at least d_sub/2 nearer the nest than the target (on its trail: along the trail, which may
-  // wind round obstacles), so that every new subgoal extends the chain toward the nest
-  const double margin = 0.5 * c.p.d_sub * kCm;
-  if (c.on_trail) return c.trail_left <= c.m.trail_at_target - margin;
-  return dist(at, c.nest) <= dist(c.m.target.last_seen, c.nest) - margin;
+  // retracing its own way home (which may wind round obstacles) counts as nestward
+  return c.on_trail || dist(at, c.nest) < dist(c.m.target.last_seen, c.nest);
 }
 
 bool found_subgoal_nearer_nest(const PfContext& c) {  // row 5r, label c while forming
@@ -255,7 +252,10 @@ void take_target(const PfContext& c, PfMemory& m) {  // row 1: the goal if in ra
 
 void target_becomes_parent(const PfContext&, PfMemory& m) { m.parent = m.target; }
 
-void retarget(const PfContext& c, PfMemory& m) { m.target = follow(*c.sight.red_nearer_nest, c.in.pose); }
+void retarget(const PfContext& c, PfMemory& m) {
+  m.target = follow(*c.sight.red_nearer_nest, c.in.pose);
+  m.target_reached = c.sight.red_nearer_nest->distance_cm <= c.p.d_detect;  // else walk to it first
+}
 
 void grow_budget(const PfContext& c, PfMemory& m) {  // row 4: "increase the minimum exploring time"
   m.t_explore = std::min((m.t_explore + c.p.dt_explore) * c.p.g_explore, c.p.t_explore_max);
@@ -355,7 +355,7 @@ Command go_to_nest(const Percept& in, const Params& p, RobotMemory& mem, const P
 }
 
 // SUBGOAL_FORMING (LED white): back off toward the nest from the target; a robot that re-targeted
-// to a subgoal nearer the nest (the chain's new tip) backs off from that one at once
+// to a subgoal nearer the nest first walks to it (the chain's tip), then backs off from there
 Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
   if (mem.pf.to_view_edge) {  // back to where the target was last in view (row 7a)
     const Vec2 back = (1.0 / kCm) * in.pose.to_local(mem.pf.last_saw_target - in.pose.p);
@@ -363,18 +363,24 @@ Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const
     if (len <= 2.0) return stop(PfState::kSubgoalForming);
     return drive(p, mem, (std::min(p.v_max, len) / len) * back, PfState::kSubgoalForming);
   }
+  if (mem.pf.target_reached && !p.backoff_spot) {
+    // back off along the robot's own way from the nest: a route it knows is passable
+    if (!mem.nav.on_trail && !mem.trail.empty()) {
+      mem.nav.on_trail = true;
+      mem.trail.start_home(in.pose.p);
+    }
+    return go_to_nest(in, p, mem, sight, PfState::kSubgoalForming);
+  }
   if (mem.pf.target_reached) {
     // back off to the nest side of the target: the point d_sub (+5 cm) from it toward the nest,
     // "in between the starting point and the detected subgoal"; once the field stalls (a quarter
     // of T_trap), along the robot's own way from the nest, a route it knows is passable
-    const bool was_on_trail = mem.nav.on_trail;
     const Vec2 tgt = mem.pf.target.last_seen;
     const Vec2 to_nest = mem.nest - tgt;
     const double len = norm(to_nest);
     const Vec2 spot = len > 0.0 ? tgt + ((p.d_sub + 5.0) * kCm / len) * to_nest : mem.nest;
     const Avoidance avoid = diffusion(in.proximity, p);
     const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest, 0.25 * p.t_trap, &spot);
-    if (mem.nav.on_trail && !was_on_trail) mem.pf.trail_at_target = mem.trail.remaining(in.pose.p);
     const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
     return drive(p, mem, p.v_max * v, PfState::kSubgoalForming);
   }
@@ -527,7 +533,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   PfSight sight;
   pf_perceive(in, p, mem.nest, m, sight);
   // transitions happen only here, via the table
-  const PfContext c{in, p, m, sight, mem.nest, mem.nav.on_trail, mem.trail.remaining(in.pose.p)};
+  const PfContext c{in, p, m, sight, mem.nest, mem.nav.on_trail};
   if (const PfTransition* fired = pf_transition(c, m)) {
     nav_reset(mem.nav);
     m.explore_blocked = false;

@@ -59,7 +59,6 @@ struct PfMemory {
   Tracked target;                ///< what the robot backs off from while forming
   bool target_reached = true;    ///< forming: has been within d_detect of the target (row 5 needs it)
   Vec2 last_saw_target;          ///< forming: the robot's position when it last saw the target [m]
-  double trail_at_target = 0;    ///< forming: trail left home when it began backing off [m]
   bool to_view_edge = false;     ///< forming: target lost, going back to last_saw_target (row 7a)
   Tracked parent;                ///< goal-side reference (the goal beacon or a robot)
   Tracked child;                 ///< nest-side reference (the nest beacon or a robot)
@@ -96,7 +95,6 @@ struct PfContext {
   const PfSight& sight;
   Vec2 nest;              ///< the nest's global position [m]
   bool on_trail = false;  ///< heading home along its own breadcrumbs
-  double trail_left = 0;  ///< what is left of that trail [m]
 };
 
 using PfGuard = bool (*)(const PfContext&);

@@ -45,26 +45,20 @@ TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_f
   TaMessage out;
   out.id = my_id;
   out.t_founder_ds = t_founder_ds;
-  if (f.remaining == 0) {
-    out.type = MsgType::kDone;
-    out.flags = kFlagAllocDone;
-    ++f.done_ticks;
-    return out;
-  }
-  // the nearest JOIN addressed to me; ties go to the smaller id
+  // the nearest JOIN addressed to me (once no robot is needed: from a robot already ACKed, whose
+  // ACK was lost); ties go to the smaller id
   const RabMessage* best = nullptr;
   std::uint8_t best_id = 0;
   for (const RabMessage& r : inbox) {
     const TaMessage m = decode(r.data);
     if (m.type != MsgType::kJoin || m.dest != my_id) continue;
+    if (f.remaining == 0 && !f.is_acked(m.id)) continue;
     if (best == nullptr || r.range_cm < best->range_cm || (r.range_cm == best->range_cm && m.id < best_id)) {
       best = &r;
       best_id = m.id;
     }
   }
-  if (best == nullptr) {
-    out.type = MsgType::kRequest;
-  } else {
+  if (best != nullptr) {
     out.type = MsgType::kAck;
     out.dest = best_id;
     if (!f.is_acked(best_id)) {  // a repeated JOIN (its ACK was lost) is answered, not counted
@@ -72,6 +66,12 @@ TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_f
       ++f.acks;
       --f.remaining;
     }
+  } else if (f.remaining == 0) {
+    out.type = MsgType::kDone;
+    out.flags = kFlagAllocDone;
+    ++f.done_ticks;
+  } else {
+    out.type = MsgType::kRequest;
   }
   out.remaining = static_cast<std::uint16_t>(f.remaining);
   return out;
@@ -117,8 +117,8 @@ DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox
 }
 
 int robots_needed(double t_seconds, double speed_cm_s, double r_vis_cm, double delta, int n_min, int swarm) {
-  const double l = speed_cm_s * t_seconds;  // Eq. (1)
-  const double n0 = l / r_vis_cm;           // Eq. (2)
+  const double l = speed_cm_s * t_seconds;                       // Eq. (1)
+  const double n0 = l / r_vis_cm;                                // Eq. (2)
   const int n = static_cast<int>(std::ceil(n0 + delta - 1e-9));  // Eq. (3), rounded up
   return std::clamp(n, n_min, swarm);
 }

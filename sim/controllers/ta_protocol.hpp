@@ -41,9 +41,9 @@ TaMessage decode(const RabPayload& payload);
 /// The founder's side. One tick at a time: it reads the JOINs addressed to it and returns what it
 /// broadcasts.
 struct FounderProtocol {
-  int remaining = 0;   ///< ACKs still to send
-  int acks = 0;        ///< distinct robots ACKed so far (the allocation, the founder aside)
-  int done_ticks = 0;  ///< ticks DONE has been broadcast
+  int remaining = 0;                     ///< ACKs still to send
+  int acks = 0;                          ///< distinct robots ACKed so far (the allocation, the founder aside)
+  int done_ticks = 0;                    ///< ticks DONE has been broadcast
   std::array<std::uint64_t, 4> acked{};  ///< ids ACKed (a robot is never counted twice)
 
   bool is_acked(std::uint8_t id) const { return (acked[id / 64] >> (id % 64)) & 1u; }
@@ -56,7 +56,8 @@ struct FounderProtocol {
 FounderProtocol start_founder(int robots);
 
 /// One founder tick: the nearest JOIN addressed to it (ties: the smaller id) gets the ACK. A JOIN
-/// from a robot already ACKed (its ACK was lost) is ACKed again without counting it again.
+/// from a robot already ACKed (its ACK was lost) is ACKed again without counting it again, also
+/// after the count has reached zero, so that a lost ACK does not leave a counted robot behind.
 /// Without a JOIN it repeats REQUEST; once no robot is needed, it broadcasts DONE.
 TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_founder_ds,
                        std::span<const RabMessage> inbox);
@@ -66,7 +67,7 @@ enum class DmDecision : std::uint8_t { kWait, kGo, kRest };
 
 struct DmTick {
   DmDecision decision = DmDecision::kWait;
-  TaMessage send;              ///< JOIN when a founder is requesting
+  TaMessage send;                  ///< JOIN when a founder is requesting
   std::uint16_t t_founder_ds = 0;  ///< the founder's t, when heard
 };
 

@@ -85,7 +85,8 @@ bool late_founder(const TaContext& c) {  // a founder that hears ALLOC_DONE befo
 }
 
 bool founder_done_and_counts_self(const TaContext& c) {  // T9
-  return c.m.protocol_started && c.m.protocol.finished(static_cast<int>(c.p.t_done)) && c.p.founder_counts_self;
+  return c.m.protocol_started && c.m.protocol.finished(static_cast<int>(c.p.t_done)) &&
+         c.p.founder_counts_self;
 }
 
 bool founder_done(const TaContext& c) {  // T9, the founder not counting itself
@@ -102,7 +103,8 @@ bool told_to_rest(const TaContext& c) {  // T6, TA d
 
 void become_founder(const TaContext& c, RobotMemory& mem) {
   // t: the founder's current minimum exploring time (default) or the ticks of this trip [s]
-  const double t_ticks = c.p.t_source == TSource::kBudget ? mem.pf.t_explore : static_cast<double>(mem.pf.t_state);
+  const double t_ticks =
+      c.p.t_source == TSource::kBudget ? mem.pf.t_explore : static_cast<double>(mem.pf.t_state);
   mem.ta.t_founder_s = t_ticks / 10.0;
   mem.ta.n = robots_needed(mem.ta.t_founder_s, c.p.v_max, c.p.r_vis, delta_for(c.p, mem.env_class),
                            static_cast<int>(c.p.n_min), c.swarm);
@@ -119,7 +121,9 @@ void start_path_formation(const TaContext& c, RobotMemory& mem, double t_founder
   mem.trail.reset(c.in.pose.p);
 }
 
-void founder_initiates(const TaContext& c, RobotMemory& mem) { start_path_formation(c, mem, mem.ta.t_founder_s); }
+void founder_initiates(const TaContext& c, RobotMemory& mem) {
+  start_path_formation(c, mem, mem.ta.t_founder_s);
+}
 
 void dm_initiates(const TaContext& c, RobotMemory& mem) {
   start_path_formation(c, mem, static_cast<double>(c.sight.dm.t_founder_ds));
@@ -139,10 +143,12 @@ const std::array<TaTransition, 9> kTable{{
   {TaState::kGoalFounder,   founder_done_and_counts_self, TaState::kPathFormation, founder_initiates, "T9",  "e"},
   {TaState::kGoalFounder,   founder_done,                 TaState::kRestingTask,   nullptr,           "T9r", "d"},
 }};
+
 // clang-format on
 
 // To `point` (the nest: along the robot's trail once the field traps it) and stop within reach.
-Command drive_to(const Percept& in, const Params& p, RobotMemory& mem, Vec2 point, double stop_within_cm, Led led) {
+Command drive_to(const Percept& in, const Params& p, RobotMemory& mem, Vec2 point, double stop_within_cm,
+                 Led led) {
   Command cmd;
   cmd.led = led;
   if (100.0 * dist(in.pose.p, point) <= stop_within_cm) return cmd;

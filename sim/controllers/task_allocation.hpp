@@ -37,29 +37,29 @@ struct TaMemory {
   TaState state = TaState::kScout;
   std::int64_t t_state = 0;
   // goal founder
-  double t_founder_s = 0;       ///< t of Eq. (1) [s]
-  int n = 0;                    ///< robots needed, Eq. (3) (the founder included when it counts itself)
+  double t_founder_s = 0;  ///< t of Eq. (1) [s]
+  int n = 0;               ///< robots needed, Eq. (3) (the founder included when it counts itself)
   bool protocol_started = false;
   FounderProtocol protocol;
   std::int64_t alloc_done_tick = -1;  ///< the tick it first broadcast DONE (T_alloc)
   int allocated = -1;                 ///< then: robots allocated, itself included when it counts itself
   // decision maker
-  std::int64_t waited = 0;      ///< ticks at the nest without hearing a REQUEST
+  std::int64_t waited = 0;  ///< ticks at the nest without hearing a REQUEST
   // resting task
   bool arrived = false;
-  std::uint8_t last_row = 0;    ///< the TA table row that fired last (index + 1)
+  std::uint8_t last_row = 0;  ///< the TA table row that fired last (index + 1)
   std::int64_t fired_tick = -1;
 };
 
 /// What the robot hears and sees that the TA rows need.
 struct TaSight {
-  bool goal_found = false;       ///< goal beacon within d_detect
+  bool goal_found = false;          ///< goal beacon within d_detect
   bool founder_or_dm_seen = false;  ///< a CYAN or GRAY80 robot within R_vis
-  bool path_colour_seen = false; ///< a robot in a path-formation state (SPEC T7)
+  bool path_colour_seen = false;    ///< a robot in a path-formation state (SPEC T7)
   bool request_heard = false;
   bool alloc_done_heard = false;
   std::uint8_t smaller_founder = kBroadcastId;
-  DmTick dm;                     ///< the decision maker's reading of the inbox
+  DmTick dm;  ///< the decision maker's reading of the inbox
   double nest_distance_cm = 0;
 };
 

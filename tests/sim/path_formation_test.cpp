@@ -52,7 +52,7 @@ std::string fire(PfMemory& m, const Reading& r, const Params& p = {}) {
   const Percept in = r.percept();
   PfSight sight;
   pf_perceive(in, p, kNest, m, sight);
-  const PfContext c{in, p, m, sight, kNest, false, 0.0};
+  const PfContext c{in, p, m, sight, kNest, false};
   const PfTransition* row = pf_transition(c, m);
   return row ? std::string(row->row) : std::string();
 }
@@ -144,7 +144,7 @@ TEST(PfTable, Row5rRetargetsToTheSubgoalNearerTheNest) {  // label c while formi
   EXPECT_EQ(fire(m, r), "#5r");
   EXPECT_EQ(m.state, PfState::kSubgoalForming);
   EXPECT_EQ(m.target.id, 8);
-  EXPECT_TRUE(m.target_reached);  // backs off from the new tip at once, no walk to it
+  EXPECT_FALSE(m.target_reached);  // walks to it first
 }
 
 TEST(PfTable, Row6aReachedTheNestBeforeDsub) {

@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: MIT
+// The task-allocation protocol in isolation (paper, "Local Communication Protocol"; SPEC §2.6):
+// one founder and k decision makers over a scripted medium that delivers one tick later, and
+// may lose or delay messages; the framing; and Eq. (1)-(3).
+#include "sim/controllers/ta_protocol.hpp"
+
+#include <map>
+#include <set>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace swarmpath::sim {
+namespace {
+
+TEST(TaFraming, EveryFieldSurvivesTheTenBytes) {
+  TaMessage m;
+  m.id = 17;
+  m.state = 3;
+  m.parent = 42;
+  m.flags = kFlagAllocDone;
+  m.type = MsgType::kAck;
+  m.dest = 99;
+  m.remaining = 0x1234;
+  m.t_founder_ds = 0xbeef;
+  const RabPayload p = encode(m);
+  EXPECT_EQ(p.size(), 10u);
+  EXPECT_EQ(p[4], 3);  // SPEC: byte 4 is the message type
+  EXPECT_EQ(p[5], 99);
+  const TaMessage back = decode(p);
+  EXPECT_EQ(back.id, 17);
+  EXPECT_EQ(back.state, 3);
+  EXPECT_EQ(back.parent, 42);
+  EXPECT_TRUE(back.alloc_done());
+  EXPECT_EQ(back.type, MsgType::kAck);
+  EXPECT_EQ(back.dest, 99);
+  EXPECT_EQ(back.remaining, 0x1234);
+  EXPECT_EQ(back.t_founder_ds, 0xbeef);
+}
+
+TEST(TaFraming, AnUnknownTypeDecodesAsNone) {
+  RabPayload p{};
+  p[4] = 9;
+  EXPECT_EQ(decode(p).type, MsgType::kNone);
+}
+
+TEST(TaEquations, WorkedExampleOfSpec27) {
+  // t = 150 s, s = 10 cm/s -> l = 1500 cm -> n0 = 15 -> delta_open 5 -> n = 20 (RR 80 % of 100)
+  EXPECT_EQ(robots_needed(150.0, 10.0, 100.0, 5.0, 2, 100), 20);
+  EXPECT_EQ(robots_needed(150.0, 10.0, 100.0, 15.0, 2, 100), 30);  // delta_obstacle
+  EXPECT_EQ(robots_needed(151.0, 10.0, 100.0, 5.0, 2, 100), 21);   // ceil
+  EXPECT_EQ(robots_needed(150.0, 10.0, 100.0, 5.0, 2, 12), 12);    // clamped to N
+  EXPECT_EQ(robots_needed(0.0, 10.0, 100.0, 0.0, 2, 100), 2);      // clamped to n_min
+}
+
+// ---- a scripted medium ----
+
+struct Sent {
+  std::int64_t deliver_at;
+  int sender;
+  RabPayload data;
+};
+
+// One founder (id 0) and k decision makers (ids 1..k, robot i at 10 i cm from the founder).
+// `lose(tick, sender, receiver)` drops a message; `delay(tick, sender)` adds ticks to its latency.
+struct Exchange {
+  int k = 0;
+  int need = 0;  // robots the founder asks for
+  std::function<bool(std::int64_t, int, int)> lose = [](std::int64_t, int, int) { return false; };
+  std::function<int(std::int64_t, int)> delay = [](std::int64_t, int) { return 0; };
+
+  FounderProtocol founder;
+  std::map<int, DmDecision> decided;  // decision maker -> go / rest
+  std::vector<int> went;              // in the order they left
+
+  void run(int done_for, std::int64_t max_ticks = 2000) {
+    founder = start_founder(need);
+    std::vector<Sent> air;
+    for (std::int64_t t = 0; t < max_ticks; ++t) {
+      // what each robot hears this tick
+      std::vector<std::vector<RabMessage>> inbox(static_cast<std::size_t>(k + 1));
+      for (const Sent& s : air) {
+        if (s.deliver_at != t) continue;
+        for (int r = 0; r <= k; ++r) {
+          if (r == s.sender || lose(t, s.sender, r)) continue;
+          RabMessage m;
+          m.sender = s.sender;
+          m.data = s.data;
+          m.range_cm = 10.0 * std::abs(r - s.sender);
+          inbox[static_cast<std::size_t>(r)].push_back(m);
+        }
+      }
+      std::erase_if(air, [t](const Sent& s) { return s.deliver_at <= t; });
+      // the founder, then every decision maker still at the nest
+      const TaMessage f = founder_tick(founder, 0, 150, inbox[0]);
+      air.push_back({t + 1 + delay(t, 0), 0, encode(f)});
+      for (int i = 1; i <= k; ++i) {
+        if (decided.count(i) != 0) continue;
+        const DmTick d =
+            decision_maker_tick(static_cast<std::uint8_t>(i), inbox[static_cast<std::size_t>(i)]);
+        if (d.decision != DmDecision::kWait) {
+          decided[i] = d.decision;
+          if (d.decision == DmDecision::kGo) went.push_back(i);
+          continue;
+        }
+        if (d.send.type == MsgType::kJoin) air.push_back({t + 1 + delay(t, i), i, encode(d.send)});
+      }
+      if (founder.finished(done_for) && static_cast<int>(decided.size()) == k) return;
+    }
+  }
+
+  std::set<int> acked_ids() const {
+    std::set<int> ids;
+    for (int i = 0; i < 256; ++i) {
+      if (founder.is_acked(static_cast<std::uint8_t>(i))) ids.insert(i);
+    }
+    return ids;
+  }
+};
+
+TEST(TaProtocol, ExactlyTheNeededRobotsGetAcksAndTheRestRest) {
+  Exchange x;
+  x.k = 12;
+  x.need = 5;
+  x.run(/*done_for=*/5);
+  EXPECT_EQ(x.founder.acks, 5);
+  EXPECT_EQ(x.founder.remaining, 0);
+  ASSERT_EQ(x.went.size(), 5u);
+  // one ACK per tick, each to the nearest JOIN: robots 1..5, in that order
+  EXPECT_EQ(x.went, (std::vector<int>{1, 2, 3, 4, 5}));
+  EXPECT_EQ(x.acked_ids(), (std::set<int>{1, 2, 3, 4, 5}));
+  for (int i = 6; i <= 12; ++i) EXPECT_EQ(x.decided[i], DmDecision::kRest) << "robot " << i;
+}
+
+TEST(TaProtocol, FewerDecisionMakersThanNeededAllGo) {
+  Exchange x;
+  x.k = 3;
+  x.need = 10;
+  x.run(5, 300);
+  EXPECT_EQ(x.went.size(), 3u);
+  EXPECT_EQ(x.founder.acks, 3);
+  EXPECT_EQ(x.founder.remaining, 7);  // still asking: nobody else is there to answer
+}
+
+TEST(TaProtocol, LostAcksAreRepeatedWithoutCountingARobotTwice) {
+  Exchange x;
+  x.k = 10;
+  x.need = 4;
+  // the founder's first three ACKs to robot 1, and every ACK to robot 2 sent before tick 20, are lost
+  int lost_to_1 = 0;
+  x.lose = [&](std::int64_t t, int sender, int receiver) {
+    if (sender != 0) return false;
+    if (receiver == 1 && lost_to_1 < 3) return ++lost_to_1, true;
+    return receiver == 2 && t < 20;
+  };
+  x.run(5);
+  EXPECT_EQ(x.founder.acks, 4);
+  EXPECT_EQ(x.acked_ids().size(), 4u);  // four distinct robots
+  const std::set<int> went(x.went.begin(), x.went.end());
+  EXPECT_EQ(went.size(), x.went.size());  // nobody went twice
+  EXPECT_EQ(went, x.acked_ids());         // the robots that went are the robots counted
+}
+
+TEST(TaProtocol, LostAndLateJoinsDoNotAllocateTwice) {
+  Exchange x;
+  x.k = 15;
+  x.need = 6;
+  // every third JOIN is lost, every other one arrives 1-3 ticks late
+  x.lose = [](std::int64_t t, int sender, int receiver) {
+    return sender != 0 && receiver == 0 && (t + sender) % 3 == 0;
+  };
+  x.delay = [](std::int64_t t, int sender) { return sender != 0 && (t + sender) % 2 == 0 ? 1 + (t % 3) : 0; };
+  x.run(5);
+  EXPECT_EQ(x.founder.acks, 6);
+  EXPECT_EQ(x.acked_ids().size(), 6u);
+  const std::set<int> went(x.went.begin(), x.went.end());
+  EXPECT_EQ(went.size(), x.went.size());
+  EXPECT_TRUE(std::includes(x.acked_ids().begin(), x.acked_ids().end(), went.begin(), went.end()));
+  EXPECT_LE(x.went.size(), 6u);
+  int rested = 0;
+  for (const auto& [id, d] : x.decided) rested += d == DmDecision::kRest ? 1 : 0;
+  EXPECT_EQ(rested + static_cast<int>(x.went.size()), 15);  // everyone decided
+}
+
+TEST(TaProtocol, DuplicateFoundersDeferToTheSmallerId) {
+  TaMessage req;
+  req.type = MsgType::kRequest;
+  std::vector<RabMessage> inbox(2);
+  req.id = 9;
+  inbox[0].data = encode(req);
+  req.id = 4;
+  inbox[1].data = encode(req);
+  EXPECT_EQ(smaller_founder_heard(7, inbox), 4);
+  EXPECT_EQ(smaller_founder_heard(3, inbox), kBroadcastId);  // 3 is the smallest: it stays founder
+  // a decision maker hearing both joins the smaller one
+  const DmTick d = decision_maker_tick(20, inbox);
+  EXPECT_EQ(d.send.type, MsgType::kJoin);
+  EXPECT_EQ(d.send.dest, 4);
+}
+
+TEST(TaProtocol, AllocDoneFlagSendsADecisionMakerToRest) {
+  TaMessage resting;
+  resting.id = 30;
+  resting.flags = kFlagAllocDone;  // a resting robot's beacon (SPEC T6)
+  std::vector<RabMessage> inbox(1);
+  inbox[0].data = encode(resting);
+  EXPECT_EQ(decision_maker_tick(5, inbox).decision, DmDecision::kRest);
+}
+
+}  // namespace
+}  // namespace swarmpath::sim

@@ -1,0 +1,257 @@
+// SPDX-License-Identifier: MIT
+// The task-allocation table (SPEC §2.6): one test per row; the allocation count for a known t and
+// delta (SPEC §2.7); a resting robot drives back to its deployment point (paper Eq. 4-5); and a
+// whole run: the founder allocates, the allocated robots form the path, and its golden hash.
+#include "sim/controllers/task_allocation.hpp"
+
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "sim/controller.hpp"
+#include "sim/hash.hpp"
+#include "sim/step.hpp"
+#include "test_support.hpp"
+
+namespace swarmpath::sim {
+namespace {
+
+constexpr Vec2 kNest{-5.0, 0.0};
+constexpr int kMe = 7;
+
+struct Reading {
+  std::vector<Blob> blobs;
+  std::vector<RabMessage> rab;
+  Vec2 at{0.0, 0.0};
+
+  void see(Led c, int emitter, double distance_cm) {
+    blobs.push_back({c, emitter, {1.0, 0.0}, distance_cm, kNobody});
+  }
+
+  void hear(const TaMessage& m, double range_cm = 50.0) {
+    RabMessage r;
+    r.sender = m.id;
+    r.data = encode(m);
+    r.range_cm = range_cm;
+    rab.push_back(r);
+  }
+
+  Percept percept() const {
+    Percept in;
+    in.tick = 500;
+    in.id = kMe;
+    in.pose = {at, 1.0, 0.0};
+    in.blobs = blobs;
+    in.rab = rab;
+    return in;
+  }
+};
+
+RobotMemory robot(TaState s, std::uint8_t env_class = 0) {
+  RobotMemory mem = init_memory(Mode::kTaskAllocation, kMe, {{0.0, 0.0}, 1.0, 0.0}, kNest, Params{}, 1);
+  mem.ta.state = s;
+  mem.env_class = env_class;
+  return mem;
+}
+
+// perceive, then apply the TA table; returns the row that fired ("" for none)
+std::string fire(RobotMemory& mem, const Reading& r, const Params& p = {}, int swarm = 100) {
+  const Percept in = r.percept();
+  TaSight sight;
+  ta_perceive(in, p, kNest, sight);
+  const TaContext c{in, p, mem.ta, sight, swarm};
+  const TaTransition* row = ta_transition(c, mem);
+  return row ? std::string(row->row) : std::string();
+}
+
+TaMessage message(std::uint8_t id, MsgType type, std::uint8_t dest = kBroadcastId) {
+  TaMessage m;
+  m.id = id;
+  m.type = type;
+  m.dest = dest;
+  m.t_founder_ds = 150;
+  return m;
+}
+
+TEST(TaTable, T2AScoutThatFindsTheGoalBecomesTheFounder) {  // TA c
+  RobotMemory mem = robot(TaState::kScout);
+  Reading r;
+  r.see(Led::kYellow, kGoalEmitter, 25);
+  EXPECT_EQ(fire(mem, r), "T2");
+  EXPECT_EQ(mem.ta.state, TaState::kGoalFounder);
+}
+
+TEST(TaTable, T2NotOnceTheAllocationIsOver) {
+  RobotMemory mem = robot(TaState::kScout);
+  Reading r;
+  r.see(Led::kYellow, kGoalEmitter, 25);
+  TaMessage done = message(3, MsgType::kNone);
+  done.flags = kFlagAllocDone;
+  r.hear(done);
+  EXPECT_EQ(fire(mem, r), "T7");  // a late arrival rests
+  EXPECT_EQ(mem.ta.state, TaState::kRestingTask);
+}
+
+TEST(TaTable, T3AScoutThatSeesAFounderLightBecomesADecisionMaker) {  // TA f, light signal
+  RobotMemory mem = robot(TaState::kScout);
+  Reading r;
+  r.see(Led::kCyan, 12, 80);
+  EXPECT_EQ(fire(mem, r), "T3");
+  EXPECT_EQ(mem.ta.state, TaState::kDecisionMaker);
+}
+
+TEST(TaTable, T3AScoutThatHearsARequestBecomesADecisionMaker) {
+  RobotMemory mem = robot(TaState::kScout);
+  Reading r;
+  r.hear(message(12, MsgType::kRequest));
+  EXPECT_EQ(fire(mem, r), "T3");
+}
+
+TEST(TaTable, T5AnAckedDecisionMakerStartsPathFormation) {  // TA e
+  RobotMemory mem = robot(TaState::kDecisionMaker);
+  Reading r;
+  r.hear(message(12, MsgType::kAck, kMe));
+  EXPECT_EQ(fire(mem, r), "T5");
+  EXPECT_EQ(mem.ta.state, TaState::kPathFormation);
+  EXPECT_EQ(mem.pf.state, PfState::kExploring);
+  EXPECT_DOUBLE_EQ(mem.pf.t_explore, Params{}.kappa * 1500.0);  // kappa t_founder (t = 150 s)
+}
+
+TEST(TaTable, T5NotForAnAckToAnotherRobot) {
+  RobotMemory mem = robot(TaState::kDecisionMaker);
+  Reading r;
+  r.hear(message(12, MsgType::kAck, kMe + 1));
+  EXPECT_EQ(fire(mem, r), "");
+}
+
+TEST(TaTable, T6DoneSendsADecisionMakerToRest) {  // TA d
+  RobotMemory mem = robot(TaState::kDecisionMaker);
+  Reading r;
+  r.hear(message(12, MsgType::kDone));
+  EXPECT_EQ(fire(mem, r), "T6");
+  EXPECT_EQ(mem.ta.state, TaState::kRestingTask);
+}
+
+TEST(TaTable, T6ADecisionMakerThatWaitedTooLongRests) {
+  RobotMemory mem = robot(TaState::kDecisionMaker);
+  mem.ta.waited = static_cast<std::int64_t>(Params{}.t_dm_wait);
+  EXPECT_EQ(fire(mem, Reading{}), "T6");
+}
+
+TEST(TaTable, T7AScoutThatSeesAPathRobotRests) {  // late arrival
+  RobotMemory mem = robot(TaState::kScout);
+  Reading r;
+  r.see(Led::kRed, 20, 90);
+  EXPECT_EQ(fire(mem, r), "T7");
+  // the nest beacon is blue too, and does not count
+  RobotMemory other = robot(TaState::kScout);
+  Reading nest;
+  nest.see(Led::kBlue, kNestEmitter, 50);
+  EXPECT_EQ(fire(other, nest), "");
+}
+
+TEST(TaTable, T8AFounderDefersToASmallerId) {
+  RobotMemory mem = robot(TaState::kGoalFounder);
+  Reading r;
+  r.hear(message(3, MsgType::kRequest));
+  EXPECT_EQ(fire(mem, r), "T8");
+  EXPECT_EQ(mem.ta.state, TaState::kDecisionMaker);
+  // a larger id does not make it defer
+  RobotMemory keep = robot(TaState::kGoalFounder);
+  Reading r2;
+  r2.hear(message(9, MsgType::kRequest));
+  EXPECT_EQ(fire(keep, r2), "");
+}
+
+TEST(TaTable, T9TheFounderJoinsThePathOnceDone) {
+  RobotMemory mem = robot(TaState::kGoalFounder);
+  mem.ta.protocol_started = true;
+  mem.ta.protocol = start_founder(0);
+  mem.ta.protocol.done_ticks = static_cast<int>(Params{}.t_done);
+  EXPECT_EQ(fire(mem, Reading{}), "T9");
+  EXPECT_EQ(mem.ta.state, TaState::kPathFormation);
+  // not counting itself, it rests instead
+  Params p;
+  p.founder_counts_self = false;
+  RobotMemory rests = robot(TaState::kGoalFounder);
+  rests.ta.protocol_started = true;
+  rests.ta.protocol = start_founder(0);
+  rests.ta.protocol.done_ticks = static_cast<int>(p.t_done);
+  EXPECT_EQ(fire(rests, Reading{}, p), "T9r");
+  EXPECT_EQ(rests.ta.state, TaState::kRestingTask);
+}
+
+TEST(TaTable, EveryRowHasAGuardAndALabelledSpecRow) {
+  for (const TaTransition& t : ta_transitions()) {
+    EXPECT_NE(t.when, nullptr);
+    EXPECT_EQ(t.row[0], 'T');
+  }
+}
+
+TEST(TaAllocation, CountForAKnownTAndDelta) {  // SPEC §2.7 worked example
+  // t = the founder's minimum exploring time, 1500 ticks = 150 s; s = 10 cm/s; v = R_vis = 100 cm
+  for (const auto& [env_class, n] : {std::pair<std::uint8_t, int>{0, 20}, {1, 30}, {2, 35}}) {
+    RobotMemory mem = robot(TaState::kScout, env_class);
+    mem.pf.t_explore = 1500;
+    Reading r;
+    r.see(Led::kYellow, kGoalEmitter, 20);
+    ASSERT_EQ(fire(mem, r), "T2");
+    EXPECT_DOUBLE_EQ(mem.ta.t_founder_s, 150.0);
+    EXPECT_EQ(mem.ta.n, n) << "class " << int(env_class);  // 15 + delta 5 / 15 / 20
+  }
+  // clamped to the swarm
+  RobotMemory small = robot(TaState::kScout);
+  small.pf.t_explore = 1500;
+  Reading r;
+  r.see(Led::kYellow, kGoalEmitter, 20);
+  fire(small, r, Params{}, 12);
+  EXPECT_EQ(small.ta.n, 12);
+}
+
+Pose at(double x, double y, double yaw_deg = 0.0) {
+  return {{x, y}, std::cos(deg2rad(yaw_deg)), std::sin(deg2rad(yaw_deg))};
+}
+
+TEST(TaResting, ARestingRobotDrivesBackToItsDeploymentPoint) {  // paper Eq. (4)-(5)
+  const Scenario s = test::small_arena();
+  const Params p;
+  World w = make_world(s, p, Mode::kTaskAllocation, 1, std::vector<Pose>{at(1.0, 1.0, -90)});
+  RobotMemory& mem = w.memory[0];
+  mem.start = {-1.5, -0.5};  // its deployment point, 2.9 m away, behind it
+  mem.ta.state = TaState::kRestingTask;
+  MetricsAccumulator acc;
+  acc.begin(1);
+  while (!mem.ta.arrived && w.tick < 1000) step(s, p, w, acc);
+  ASSERT_TRUE(mem.ta.arrived) << "at (" << w.positions[0].x << ", " << w.positions[0].y << ") after "
+                              << w.tick;
+  EXPECT_LT(w.tick, 600);  // about 2.9 m at 10 cm/s, plus turning
+  for (int i = 0; i < 100; ++i) step(s, p, w, acc);
+  EXPECT_LE(100.0 * dist(w.positions[0], mem.start), p.d_arrive + 1.0);  // and stays there
+  EXPECT_EQ(w.leds[0], Led::kBlack);                                     // LEDs off
+}
+
+Scenario short_chain() { return load_scenario(test::source_path("tests/data/short_chain.toml")); }
+
+TEST(TaRun, TheFounderAllocatesAndTheAllocatedRobotsFormThePath) {
+  const Scenario s = with_max_ticks(short_chain(), 20000);
+  const Metrics m = evaluate(Params{}, s, Mode::kTaskAllocation, 1);
+  ASSERT_GE(m.allocated, 2);
+  EXPECT_LT(m.allocated, s.robots);  // some robots rest
+  EXPECT_NEAR(m.resource_reduction_pct, 100.0 * (s.robots - m.allocated) / s.robots, 1e-9);
+  EXPECT_GE(m.ticks_to_allocate, 0);
+  EXPECT_TRUE(m.success) << "no path after " << m.ticks << " ticks";
+  EXPECT_GE(m.ticks_to_form, m.ticks_to_allocate);
+  EXPECT_LE(m.path_robots, m.allocated);  // only allocated robots form it
+}
+
+TEST(Determinism, GoldenHashTaskAllocationShortChain) {
+  // update only with a reason, stated in the commit that changes it
+  constexpr std::uint64_t kExpected = 0x9e07d4455e5bc556ULL;
+  const Metrics m = evaluate(Params{}, with_max_ticks(short_chain(), 20000), Mode::kTaskAllocation, 1);
+  EXPECT_EQ(m.state_hash, kExpected) << "actual state_hash 0x" << to_hex(m.state_hash) << " (ticks "
+                                     << m.ticks << ", allocated " << m.allocated << ")";
+}
+
+}  // namespace
+}  // namespace swarmpath::sim
