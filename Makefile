@@ -6,7 +6,7 @@
 #   make format   clang-format every source file in place
 
 JOBS ?= $(shell nproc)
-SOURCES := $(shell git ls-files 'sim/*.cpp' 'sim/*.hpp' 'evolve/*.cpp' 'evolve/*.hpp' 'app/*.cpp' 'app/*.hpp' \
+SOURCES := $(shell git ls-files --cached --others --exclude-standard 'sim/*.cpp' 'sim/*.hpp' 'evolve/*.cpp' 'evolve/*.hpp' 'app/*.cpp' 'app/*.hpp' \
              'tests/*.cpp' 'tests/*.hpp' 'bench/*.cpp' 'bench/*.hpp' 2>/dev/null)
 SCENARIO ?= configs/scenarios/paper/env4.toml
 

@@ -58,9 +58,9 @@ struct Params {
   double r_keep = 90;           ///< 31: max distance kept to each reference [cm]
   bool revert_orphans = false;  ///< 32: SUB_NEST/PATH_DONE revert to RED when the parent is lost
   // task allocation (SPEC §2.6, §2.7)
-  double delta_open = 5;                ///< 33: delta for open environments [robots]
-  double delta_obstacle = 15;           ///< 34: delta for obstacle environments [robots]
-  double delta_complex = 20;            ///< 35: delta for complex environments [robots]
+  double delta_open = 25;               ///< 33: delta for open environments [robots]
+  double delta_obstacle = 35;           ///< 34: delta for obstacle environments [robots]
+  double delta_complex = 35;            ///< 35: delta for complex environments [robots]
   TSource t_source = TSource::kBudget;  ///< 36: t in l = s*t
   double kappa = 1.2;                   ///< 37: allocated robots' budget = kappa * t_founder
   double n_min = 2;                     ///< 38: lower clamp on n [robots]
@@ -70,11 +70,17 @@ struct Params {
   double d_arrive = 5;                  ///< 42: resting arrival tolerance [cm]
   // options outside the genome (SPEC §2.1, §7 "fixed experiment settings")
   NeighbourId neighbour_id = NeighbourId::kVisionId;
-  double track_gate = 20;     ///< vision-only tracking gate [cm]
-  double w_seek = 1.0;        ///< weight of the pull toward a goal or RED light an explorer sees
-  double t_trap = 100;        ///< ticks without progress toward a point before edge following [ticks]
-  double t_follow = 2000;     ///< longest edge following [ticks]
-  bool site_fidelity = true;  ///< start an exploration trip toward the last goal/subgoal sighting
+  double track_gate = 20;           ///< vision-only tracking gate [cm]
+  double w_seek = 1.0;              ///< weight of the pull toward a goal or RED light an explorer sees
+  double t_trap = 100;              ///< ticks without progress toward a point before edge following [ticks]
+  double t_follow = 2000;           ///< longest edge following [ticks]
+  bool site_fidelity = true;        ///< start an exploration trip toward the last goal/subgoal sighting
+  bool form_one_at_a_time = false;  ///< an explorer does not start forming while a WHITE robot is in view [R]
+  double p_form = 0.1;              ///< per-tick probability that a waiting explorer starts forming
+  bool guided_departure = true;     ///< TA: allocated robots follow the founder's CYAN light out [R]
+  double guide_speed = 0.7;         ///< the founder's speed factor while leading
+  double guide_gap = 40;            ///< distance a follower keeps to its guide [cm]
+  double t_guide_lost = 30;         ///< ticks without a guide in view before a follower explores alone
   bool backoff_spot =
       false;  ///< forming: back off to the spot d_sub from the target toward the nest (else along the trail)
 };

@@ -146,6 +146,10 @@ Vec2 local_cm(const Pose& pose, const Tracked& t) {
 
 bool found_goal_or_subgoal(const PfContext& c) {  // row 1, label c
   if (c.m.scout) return false;  // a TA scout that finds the goal becomes the founder instead
+  // one at a time [R]: while another robot in view is forming, wait for it to become the tip
+  if (c.p.form_one_at_a_time && c.sight.forming_in_view) return false;
+  // ... and robots waiting for one do not all start in the same tick (p_form per tick)
+  if (c.p.form_one_at_a_time && !c.sight.may_form) return false;
   return (c.sight.goal != nullptr && c.sight.goal->distance_cm <= c.p.d_detect) ||
          c.sight.red_near != nullptr;
 }
@@ -311,6 +315,39 @@ Command stop(PfState s) {
   return cmd;
 }
 
+// Guided departure [R] (task allocation): an allocated robot's first trip follows the CYAN
+// lights, the founder going back to the goal and the robots following it, keeping guide_gap from
+// the one fewest hops from the founder (ties: farthest from the nest); the goal or a RED subgoal in view ends
+// it, and so does seeing no guide for T_guide_lost. Following does not spend the budget (it is travel, like
+// row 2's).
+bool follow_guide(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight, Command& cmd) {
+  PfMemory& m = mem.pf;
+  if (sight.lure != nullptr) {
+    m.follow_guide = false;
+    return false;
+  }
+  if (sight.guide == nullptr) {
+    if (static_cast<double>(++m.guide_unseen) >= p.t_guide_lost) {
+      m.follow_guide = false;
+      return false;
+    }
+  } else {
+    m.guide_unseen = 0;
+    m.guide_hops = (sight.guide->tag == kNobody ? 0 : sight.guide->tag) + 1;
+  }
+  ++m.travel_ticks;
+  mem.trail.record(in.pose.p);
+  const Avoidance avoid = diffusion(in.proximity, p);
+  Vec2 v = (avoid.collision ? avoid.direction : Vec2{}) + sight.repulsion;
+  if (sight.guide != nullptr) {
+    const double gap = std::clamp((sight.guide->distance_cm - p.guide_gap) / p.guide_gap, -1.0, 1.0);
+    v += gap * sight.guide->dir;
+  }
+  cmd = drive(p, mem, p.v_max * v, PfState::kExploring);
+  cmd.led = Led::kCyan;
+  return true;
+}
+
 // V = v_max (D + w_away F_away(nest) + w_rw u_phi + R), or the obstacle's edge when the robot
 // can get no farther from the nest; an explorer whose edge following gets it nowhere (the arena's
 // boundary, a corner) ends its trip
@@ -319,6 +356,9 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
   update_walk_heading(mem.walk_heading, mem.walk_dir, mem.rng, p);
   // site fidelity: travel back to where the chain was seen, then explore from there
   PfMemory& m = mem.pf;
+  if (m.follow_guide) {
+    if (Command cmd; follow_guide(in, p, mem, sight, cmd)) return cmd;
+  }
   if (m.to_sighting) ++m.travel_ticks;
   if (m.to_sighting && (sight.lure != nullptr || dist(in.pose.p, m.sighting) < 0.5)) {
     m.to_sighting = false;
@@ -330,8 +370,12 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
     const Avoidance avoid = diffusion(in.proximity, p);
     const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, m.sighting);
     const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
-    return drive(p, mem, p.v_max * v, PfState::kExploring);
+    if (!m.guide) return drive(p, mem, p.v_max * v, PfState::kExploring);
+    Command cmd = drive(p, mem, p.guide_speed * p.v_max * v, PfState::kExploring);
+    cmd.led = Led::kCyan;
+    return cmd;
   }
+  m.guide = false;
   if (sight.lure == nullptr &&
       nav_update(mem.nav, p, mem.rng, sight.nest_distance_cm, in, -field_toward(in.pose, mem.nest))) {
     return drive(p, mem, p.v_max * follow_edge(in, mem.nav.side), PfState::kExploring);
@@ -428,7 +472,20 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   double red_best = p.d_detect;
   double lure_best = p.r_vis + 1.0;
   double sub_best = p.r_vis + 1.0;
+  int guide_hops = kMaxGuideHops;
+  double guide_far = -1.0;
   for (const Blob& b : in.blobs) {
+    if (m.follow_guide && b.color == Led::kCyan && b.emitter >= 0) {
+      // the light's tag is its hop count to the founder (the founder at the nest advertises none)
+      const int hops = b.tag == kNobody ? 0 : b.tag;
+      const double to_nest = dist(blob_position(in.pose, b), nest);
+      if (hops >= 0 && (hops < guide_hops || (hops == guide_hops && to_nest > guide_far))) {
+        guide_hops = hops;
+        guide_far = to_nest;
+        sight.guide = &b;
+      }
+      continue;
+    }
     if (b.emitter == kGoalEmitter) {
       sight.goal = &b;
       sight.lure = &b;
@@ -452,6 +509,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
       sub_best = b.distance_cm;
       sight.my_subnest = &b;
     }
+    if (b.color == Led::kWhite && b.emitter >= 0) sight.forming_in_view = true;
     // R: recovery robots repel everyone; explorers keep clear of path robots too (label e)
     const bool repels =
         b.color == Led::kOrange || (m.state == PfState::kExploring && is_path_colour(b.color));
@@ -532,6 +590,8 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   PfMemory& m = mem.pf;
   PfSight sight;
   pf_perceive(in, p, mem.nest, m, sight);
+  sight.may_form = !p.form_one_at_a_time || m.state != PfState::kExploring || sight.lure == nullptr ||
+                   mem.rng.bernoulli(p.p_form);
   // transitions happen only here, via the table
   const PfContext c{in, p, m, sight, mem.nest, mem.nav.on_trail};
   if (const PfTransition* fired = pf_transition(c, m)) {
@@ -541,6 +601,8 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
     m.last_saw_target = in.pose.p;
     m.view_limited = false;
     m.safe_pos = in.pose.p;
+    m.guide = false;
+    m.follow_guide = false;
     if (fired->to == PfState::kReturnToNest && !m.sighted_this_trip) m.has_sighting = false;  // a stale lead
     if (fired->to == PfState::kExploring) {
       // a new trip: head for the last sighting (site fidelity), else keep the random heading
@@ -579,6 +641,8 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   // vision + ID: the light also carries the robot's parent (SPEC §2.1), so that a subgoal can
   // tell which sub-nest is its own (row 9b)
   cmd.tag = m.parent.valid() ? m.parent.id : kNobody;
+  // guided departure: a guide's light carries its hop count to the founder instead
+  if (cmd.led == Led::kCyan) cmd.tag = m.guide ? 0 : m.guide_hops;
   return cmd;
 }
 

@@ -49,6 +49,9 @@ struct Tracked {
 };
 
 /// The path-formation memory of one robot.
+/// Longest chain of followers behind a guiding founder; beyond it a light is no guide.
+inline constexpr int kMaxGuideHops = 30;
+
 struct PfMemory {
   PfState state = PfState::kExploring;
   bool scout = false;            ///< task allocation's scout: explores, but row 1 is the TA's (founder)
@@ -69,6 +72,10 @@ struct PfMemory {
   bool sighted_this_trip = false;
   bool to_sighting = false;       ///< exploring: first travelling back to the sighting (site fidelity)
   std::int64_t travel_ticks = 0;  ///< exploring: ticks spent travelling to the sighting (not budget)
+  bool guide = false;             ///< TA founder leading the allocated robots to the goal (LED CYAN) [R]
+  bool follow_guide = false;      ///< allocated robot following the CYAN guides on its first trip [R]
+  std::int64_t guide_unseen = 0;  ///< consecutive ticks a follower has seen no guide
+  int guide_hops = 0;             ///< follower: hops to the founder, advertised with the light
   std::uint8_t last_row = 0;      ///< the table row that fired last (index + 1; 0 = none)
   std::int64_t fired_tick = -1;   ///< the tick it fired
 };
@@ -82,7 +89,10 @@ struct PfSight {
   const Blob* red_nearer_nest =
       nullptr;  ///< forming: the RED robot in view nearest the nest, if nearer than the target
   const Blob* my_subnest = nullptr;  ///< the nearest BLUE robot advertising me as its parent
+  const Blob* guide = nullptr;       ///< follower: the CYAN robot in view fewest hops from the founder
   bool recovery_near = false;        ///< an ORANGE robot within r_rec
+  bool forming_in_view = false;      ///< a WHITE (subgoal-forming) robot within R_vis
+  bool may_form = true;              ///< this tick's draw of p_form (one at a time)
   Vec2 repulsion;                    ///< R (SPEC §2.1), robot frame
   double nest_distance_cm = 0;       ///< from the positioning sensor
 };

@@ -121,12 +121,15 @@ void start_path_formation(const TaContext& c, RobotMemory& mem, double t_founder
   mem.trail.reset(c.in.pose.p);
 }
 
+// guided departure [R]: the founder leads the allocated robots back to the goal
 void founder_initiates(const TaContext& c, RobotMemory& mem) {
   start_path_formation(c, mem, mem.ta.t_founder_s);
+  mem.pf.guide = c.p.guided_departure && mem.pf.to_sighting;
 }
 
 void dm_initiates(const TaContext& c, RobotMemory& mem) {
   start_path_formation(c, mem, static_cast<double>(c.sight.dm.t_founder_ds));
+  mem.pf.follow_guide = c.p.guided_departure;
 }
 
 // clang-format off

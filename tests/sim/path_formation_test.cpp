@@ -367,5 +367,66 @@ TEST(Alignment, MidpointBlend) {
   EXPECT_NEAR(t.x, 10.0, 1e-12);
 }
 
+TEST(PfTable, OneAtATimeWaitsWhileARobotIsForming) {  // [R] form_one_at_a_time
+  Params p;
+  p.form_one_at_a_time = true;
+  Reading r;
+  r.add(Led::kRed, 7, 45, 28);     // a subgoal within d_detect
+  r.add(Led::kWhite, 8, -30, 80);  // another robot forming, in view
+  PfMemory waiting = in_state(PfState::kExploring);
+  EXPECT_EQ(fire(waiting, r, p), "");
+  PfMemory eager = in_state(PfState::kExploring);
+  EXPECT_EQ(fire(eager, r), "#1");  // the default (false) forms at once
+  Reading clear;
+  clear.add(Led::kRed, 7, 45, 28);
+  PfMemory alone = in_state(PfState::kExploring);
+  EXPECT_EQ(fire(alone, clear, p), "#1");
+}
+
+// guided departure [R]: an allocated robot's first trip follows the CYAN lights
+RobotMemory follower() {
+  RobotMemory mem = init_memory(Mode::kPathFormation, kMe, {{0.0, 0.0}, 1.0, 0.0}, kNest, Params{}, 1);
+  mem.pf.follow_guide = true;
+  return mem;
+}
+
+TEST(GuidedDeparture, FollowsTheLightFewestHopsFromTheFounder) {
+  RobotMemory mem = follower();
+  Reading r;
+  r.add(Led::kCyan, 20, 90, 90, 3);   // left, 3 hops from the founder
+  r.add(Led::kCyan, 21, -90, 90, 0);  // right: the founder itself
+  const Command cmd = path_formation_step(r.percept(), Params{}, mem);
+  EXPECT_EQ(cmd.led, Led::kCyan);
+  EXPECT_EQ(cmd.tag, 1);                     // one hop behind the founder
+  EXPECT_GT(cmd.left_cm_s, cmd.right_cm_s);  // turning right, toward the founder
+  EXPECT_EQ(mem.pf.state, PfState::kExploring);
+  EXPECT_EQ(mem.pf.travel_ticks, 1);  // following is travel, not budget
+}
+
+TEST(GuidedDeparture, KeepsItsGapAndStopsAtIt) {
+  RobotMemory mem = follower();
+  Reading r;
+  r.add(Led::kCyan, 21, 0, Params{}.guide_gap, 0);  // straight ahead, exactly guide_gap away
+  const Command cmd = path_formation_step(r.percept(), Params{}, mem);
+  EXPECT_NEAR(cmd.left_cm_s, 0.0, 1e-9);
+  EXPECT_NEAR(cmd.right_cm_s, 0.0, 1e-9);
+}
+
+TEST(GuidedDeparture, ExploresAloneAfterTGuideLostOrOnSeeingTheGoal) {
+  const Params p;
+  RobotMemory mem = follower();
+  for (int t = 0; t + 1 < static_cast<int>(p.t_guide_lost); ++t) {
+    EXPECT_EQ(path_formation_step(Reading{}.percept(), p, mem).led, Led::kCyan) << t;
+  }
+  EXPECT_EQ(path_formation_step(Reading{}.percept(), p, mem).led, Led::kGreen);
+  EXPECT_FALSE(mem.pf.follow_guide);
+  RobotMemory lured = follower();
+  Reading r;
+  r.add(Led::kCyan, 21, 0, 60, 0);
+  r.add(Led::kYellow, kGoalEmitter, 30, 80);  // the goal in view beats the guide
+  EXPECT_EQ(path_formation_step(r.percept(), p, lured).led, Led::kGreen);
+  EXPECT_FALSE(lured.pf.follow_guide);
+}
+
 }  // namespace
 }  // namespace swarmpath::sim
