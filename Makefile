@@ -1,5 +1,6 @@
 # swarmpath: thin wrapper over the CMake presets (see README.md).
-#   make run      build (release) and run the main job
+#   make run      build (release), evolve with configs/evolve/default.toml, evaluate the best against
+#                 genomes/paper.toml on fresh seeds, export it for ARGoS
 #   make test     build and run every test in release and under ASan + UBSan, then check formatting
 #   make asan     only the ASan + UBSan build and tests
 #   make bench    build (release) and run the benchmarks
@@ -8,7 +9,6 @@
 JOBS ?= $(shell nproc)
 SOURCES := $(shell git ls-files --cached --others --exclude-standard 'sim/*.cpp' 'sim/*.hpp' 'evolve/*.cpp' 'evolve/*.hpp' 'app/*.cpp' 'app/*.hpp' \
              'tests/*.cpp' 'tests/*.hpp' 'bench/*.cpp' 'bench/*.hpp' 2>/dev/null)
-SCENARIO ?= configs/scenarios/paper/env4.toml
 
 .PHONY: all build run test asan bench format format-check clean
 
@@ -20,8 +20,13 @@ build:
 
 run: build
 	@mkdir -p results
-	./build/release/swarmpath simulate --scenario $(SCENARIO) --ticks 3000 --trails --svg results/env4_diffusion.svg
-	@echo "picture: results/env4_diffusion.svg"
+	./build/release/swarmpath evolve --config configs/evolve/default.toml --threads $(JOBS)
+	./build/release/swarmpath evaluate --params results/evolve/default/best.toml --against genomes/paper.toml \
+	  --scenarios configs/scenarios/paper/env1.toml configs/scenarios/paper/env3.toml configs/scenarios/paper/env4.toml \
+	  --robots 60 --seeds 4 --seed-base 1000 --threads $(JOBS) --json results/evolve/default/evaluate.json
+	./build/release/swarmpath export --params results/evolve/default/best.toml --format argos \
+	  --out results/evolve/default/best.argos.xml
+	@echo "files: results/evolve/default/ (best.toml, log.csv, fitness.svg, run.json, checkpoint.json, evaluate.json, best.argos.xml)"
 
 test: build
 	ctest --preset release -j $(JOBS)

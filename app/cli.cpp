@@ -38,6 +38,21 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
         "table", "Run a grid of scenario x robots x seed in parallel and write the paper's results table.");
     commands.push_back({c, add_table(*c)});
   }
+  {
+    CLI::App* c = app.add_subcommand(
+        "evolve", "Tune controller parameters with an optimiser (evolve config; checkpoints; --resume).");
+    commands.push_back({c, add_evolve(*c)});
+  }
+  {
+    CLI::App* c = app.add_subcommand(
+        "evaluate", "The experiment table of one params file, optionally beside another on the same seeds.");
+    commands.push_back({c, add_evaluate(*c)});
+  }
+  {
+    CLI::App* c =
+        app.add_subcommand("export", "Write a params file as TOML, JSON or an ARGoS <params> block.");
+    commands.push_back({c, add_export(*c)});
+  }
 
   // CLI11 wants argv order with the program name first and parses from the back
   std::vector<std::string> reversed(args.rbegin(), args.rend());

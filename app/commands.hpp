@@ -17,5 +17,8 @@ using Runner = std::function<int(std::ostream& out, std::ostream& err)>;
 Runner add_simulate(CLI::App& app);
 Runner add_astar(CLI::App& app);
 Runner add_table(CLI::App& app);
+Runner add_evolve(CLI::App& app);
+Runner add_evaluate(CLI::App& app);
+Runner add_export(CLI::App& app);
 
 }  // namespace swarmpath::app

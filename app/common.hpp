@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "evolve/stopwatch.hpp"
 #include "sim/controller.hpp"
 #include "sim/metrics.hpp"
 #include "sim/params.hpp"
@@ -36,14 +37,6 @@ std::string fixed(double v, int digits);
 bool stderr_is_terminal();
 
 /// Wall-clock stopwatch for reporting (never used inside the simulator).
-class Stopwatch {
- public:
-  double seconds() const {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  }
-
- private:
-  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
-};
+using evolve::Stopwatch;
 
 }  // namespace swarmpath::app

@@ -7,9 +7,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "evolve/xml_escape.hpp"
 #include "sim/robot_model.hpp"
 
 namespace swarmpath::app {
+
+using evolve::xml_escape;
 
 namespace {
 
@@ -21,26 +24,6 @@ std::string hex(sim::Led c) {
   o << '#' << std::hex << std::setfill('0') << std::setw(2) << int{rgb.r} << std::setw(2) << int{rgb.g}
     << std::setw(2) << int{rgb.b};
   return o.str();
-}
-
-std::string escape(const std::string& s) {
-  std::string out;
-  for (const char ch : s) {
-    switch (ch) {
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '&':
-        out += "&amp;";
-        break;
-      default:
-        out += ch;
-    }
-  }
-  return out;
 }
 
 struct Frame {
@@ -66,11 +49,11 @@ void write_svg(std::ostream& out, const Picture& pic) {
       << "\" viewBox=\"0 0 " << width << ' ' << height << "\" font-family=\"sans-serif\">\n";
   out << "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
   // title and caption
-  out << "<text x=\"6\" y=\"17\" font-size=\"15\" font-weight=\"bold\">" << escape(s.name) << " ("
+  out << "<text x=\"6\" y=\"17\" font-size=\"15\" font-weight=\"bold\">" << xml_escape(s.name) << " ("
       << sim::to_string(s.env_class) << ")</text>\n";
   for (std::size_t i = 0; i < pic.caption.size(); ++i) {
     out << "<text x=\"6\" y=\"" << 17.0 + 16.0 * static_cast<double>(i + 1) << "\" font-size=\"12\">"
-        << escape(pic.caption[i]) << "</text>\n";
+        << xml_escape(pic.caption[i]) << "</text>\n";
   }
   // arena floor and a 1 m grid
   out << "<rect x=\"0\" y=\"" << f.top << "\" width=\"" << width << "\" height=\"" << s.arena_size.y * f.k
@@ -160,8 +143,8 @@ void write_svg(std::ostream& out, const Picture& pic) {
   for (const Polyline& line : pic.lines) {
     if (line.label.empty()) continue;
     out << "<line x1=\"8\" y1=\"" << ly - 4 << "\" x2=\"36\" y2=\"" << ly - 4 << "\" stroke=\"" << line.color
-        << "\" stroke-width=\"3\"/><text x=\"42\" y=\"" << ly << "\" font-size=\"12\">" << escape(line.label)
-        << "</text>\n";
+        << "\" stroke-width=\"3\"/><text x=\"42\" y=\"" << ly << "\" font-size=\"12\">"
+        << xml_escape(line.label) << "</text>\n";
     ly += 16.0;
   }
   out << "</svg>\n";

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -185,6 +187,35 @@ TEST(CliTable, OutputIsIdenticalAtOneAndTwoThreads) {
   // the CSV has a header and one line per run
   const std::string csv = slurp(dir / "t2.csv");
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
+}
+
+TEST(CliTable, BothModesArePairedAndSummarised) {  // issue 4: table --mode both
+  const auto dir = temp_file("y", "").parent_path();
+  const auto out = dir / "both.json";
+  const Result r = cli({"table", "--scenarios", short_chain(), "--robots", "16", "--seeds", "2", "--mode",
+                        "both", "--ticks", "12000", "--threads", "2", "--json", out.string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(slurp(out));
+  ASSERT_EQ(j["runs"].size(), 4u);  // 2 seeds x 2 modes
+  std::map<std::string, std::set<std::uint64_t>> seeds;
+  double rr_sum = 0;
+  int ta_runs = 0;
+  for (const auto& run : j["runs"]) {
+    seeds[run["mode"].get<std::string>()].insert(run["seed"].get<std::uint64_t>());
+    if (run["mode"] == "ta" && run["allocated"].is_number() && run["allocated"].get<int>() > 0) {
+      rr_sum += 100.0 * (16 - run["allocated"].get<int>()) / 16.0;
+      ++ta_runs;
+    }
+  }
+  EXPECT_EQ(seeds["pf"], seeds["ta"]);  // the same seeds with and without task allocation
+  ASSERT_GT(ta_runs, 0);
+  for (const char* key :
+       {"success_rate_pf", "success_rate_ta", "pct_pf_shorter_than_astar", "pct_ta_shorter_than_astar",
+        "pct_ta_faster", "pct_ta_shorter_than_pf", "mean_resource_reduction_pct"}) {
+    EXPECT_TRUE(j["summary"].contains(key)) << key;
+  }
+  EXPECT_NEAR(j["summary"]["mean_resource_reduction_pct"].get<double>(), rr_sum / ta_runs, 1e-9);
+  EXPECT_NE(r.out.find("paper"), std::string::npos);  // the paper's numbers beside ours
 }
 
 TEST(CliTable, RejectsBadGrids) {

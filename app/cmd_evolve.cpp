@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: MIT
+// swarmpath evolve: tune controller parameters as an evolve config says, with a progress line,
+// a checkpoint after every generation and --resume.
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <ostream>
+
+#include <CLI/CLI.hpp>
+#include <omp.h>
+
+#include "cli.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+#include "evolve/evolve_config.hpp"
+#include "evolve/objective.hpp"
+#include "evolve/runner.hpp"
+#include "sim/config_error.hpp"
+
+namespace swarmpath::app {
+
+namespace {
+
+struct EvolveOptions {
+  std::string config;
+  std::string out;
+  int threads = 0;
+  std::optional<int> generations;
+  bool resume = false;
+  bool no_wall_time = false;
+};
+
+std::string num(double v) {
+  if (std::isnan(v)) return "-";
+  return fixed(v, std::fabs(v) >= 100.0 ? 0 : 4);
+}
+
+std::string budget_text(const evolve::Budget& b) {
+  std::string s;
+  const auto add = [&](const std::string& t) { s += (s.empty() ? "" : ", ") + t; };
+  if (b.generations > 0) add(std::to_string(b.generations) + " generations");
+  if (b.evaluations > 0) add(std::to_string(b.evaluations) + " evaluations");
+  if (b.wall_seconds > 0) add(fixed(b.wall_seconds, 0) + " s");
+  return s;
+}
+
+// the remaining wall time, from the pace of this process
+double eta_seconds(const evolve::Budget& b, const evolve::RunState& st, std::int64_t gen0, std::int64_t eval0,
+                   double elapsed) {
+  const double gens = static_cast<double>(st.generation - gen0);
+  if (gens <= 0) return 0.0;
+  double eta = 0.0;
+  if (b.generations > 0) eta = elapsed / gens * static_cast<double>(b.generations - st.generation);
+  if (b.evaluations > 0) {
+    const double evals = static_cast<double>(st.evaluations - eval0);
+    const double e =
+        elapsed / evals * static_cast<double>(std::max<std::int64_t>(0, b.evaluations - st.evaluations));
+    eta = b.generations > 0 ? std::min(eta, e) : e;
+  }
+  if (b.wall_seconds > 0) {
+    const double w = std::max(0.0, b.wall_seconds - elapsed);
+    eta = (b.generations > 0 || b.evaluations > 0) ? std::min(eta, w) : w;
+  }
+  return std::max(0.0, eta);
+}
+
+void print_stats_row(std::ostream& out, const std::string& label, const std::string& found,
+                     const evolve::CandidateStats& gen, const evolve::CandidateStats& fresh,
+                     const evolve::CandidateStats& held) {
+  out << "| " << label << " | " << found << " | " << (gen.runs > 0 ? num(gen.fitness) : "-") << " | "
+      << num(fresh.fitness) << " | " << (held.runs > 0 ? num(held.fitness) : "-") << " | "
+      << fixed(100.0 * fresh.success_rate, 0) << " % | " << fixed(fresh.mean_ticks, 0) << " | "
+      << num(fresh.mean_path_ratio) << " | " << fixed(fresh.mean_robots, 1) << " |\n";
+}
+
+int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
+  const evolve::EvolveConfig c = evolve::load_evolve_config(o.config);
+  if (o.generations && *o.generations < 1) throw sim::ConfigError("--generations", 0, "", "must be >= 1");
+  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
+  const std::string dir =
+      o.out.empty() ? (std::filesystem::path("results") / "evolve" / c.name).string() : o.out;
+  const evolve::SwarmObjective objective(c);
+  const evolve::Budget budget = evolve::effective_budget(c, o.generations);
+
+  std::size_t training = 0;
+  for (const evolve::EvalSetting& s : objective.settings()) training += s.held_out ? 0 : 1;
+  std::string names;
+  for (const evolve::Gene& g : c.genome.genes)
+    names += (names.empty() ? "" : " ") + std::string(g.info->name);
+  err << "swarmpath evolve: " << c.name << " (" << c.file << "), mode " << sim::to_string(c.mode) << ", "
+      << c.genome.dim() << " parameters (" << names << "), "
+      << training * static_cast<std::size_t>(c.evaluation.seeds) << " runs per candidate (" << training
+      << " scenario x robots settings x " << c.evaluation.seeds << " seeds), optimiser " << c.optimizer.name
+      << ", budget " << budget_text(budget) << ", " << threads << " threads -> " << dir << "\n";
+  if (!o.resume && std::filesystem::exists(std::filesystem::path(dir) / "checkpoint.json")) {
+    err << "  starting afresh: the files in " << dir << " will be replaced (--resume continues them)\n";
+  }
+
+  const bool tty = stderr_is_terminal();
+  const Stopwatch clock;
+  std::int64_t gen0 = 0, eval0 = 0;  // where this process starts (for the ETA)
+  if (o.resume) {
+    const std::string ck = (std::filesystem::path(dir) / "checkpoint.json").string();
+    if (std::filesystem::exists(ck)) {
+      const evolve::RunState s = evolve::read_checkpoint(ck);
+      gen0 = s.generation;
+      eval0 = s.evaluations;
+    }
+  }
+  std::int64_t in_flight = gen0;
+  double best_so_far = std::nan("");
+  evolve::RunOptions ro;
+  ro.out_dir = dir;
+  ro.threads = threads;
+  ro.generations = o.generations;
+  ro.resume = o.resume;
+  ro.wall_time = !o.no_wall_time;
+  ro.note = [&](const std::string& s) {
+    if (tty) err << "\r\033[K";
+    err << "  " << s << "\n";
+  };
+  ro.progress = [&](std::size_t done, std::size_t total) {
+    if (!tty) return;
+    err << "\r\033[K  generation " << in_flight << ": " << done << " / " << total << " runs, best so far "
+        << num(best_so_far) << ", " << fixed(clock.seconds(), 0) << " s" << std::flush;
+  };
+  ro.callbacks.push_back([&](const evolve::GenerationRecord& r, const evolve::RunState& st) {
+    best_so_far = r.best_so_far;
+    in_flight = r.generation + 1;
+    const double t = clock.seconds();
+    if (tty) err << "\r\033[K";
+    err << "  generation " << r.generation
+        << (budget.generations > 0 ? "/" + std::to_string(budget.generations) : "") << ": best "
+        << num(r.best) << " (success " << fixed(100.0 * r.best_success_rate, 0) << " %), mean " << num(r.mean)
+        << " +- " << num(r.std) << ", best so far " << num(r.best_so_far) << ", " << r.evaluations
+        << " evaluations, " << fixed(t, 0) << " s, ETA " << fixed(eta_seconds(budget, st, gen0, eval0, t), 0)
+        << " s\n";
+    return false;
+  });
+  const evolve::RunResult r = evolve::run_evolution(c, objective, ro);
+  if (tty) err << "\r\033[K";
+  err << "  done in " << fixed(clock.seconds(), 1) << " s (stopped by " << r.stop_reason << ")\n";
+
+  // the finalists on fresh seeds, the base params beside them
+  const evolve::Finalist& best = r.finalists[r.best];
+  out << "run " << c.name << ": " << r.state.generation << " generations, " << r.state.evaluations
+      << " evaluations, " << r.state.runs << " training runs; finalists re-evaluated on "
+      << r.reevaluation_cases.size() << " fresh cases each\n\n";
+  out << "| candidate | found | generation fitness | fresh fitness | held-out fitness | success | ticks | "
+         "path/A* "
+         "| robots |\n|---|---|---|---|---|---|---|---|---|\n";
+  for (std::size_t i = 0; i < r.finalists.size(); ++i) {
+    const evolve::Finalist& f = r.finalists[i];
+    print_stats_row(out, (i == r.best ? "**" + std::to_string(i) + " (best)**" : std::to_string(i)),
+                    "gen " + std::to_string(f.elite.generation) + " #" + std::to_string(f.elite.candidate),
+                    f.elite.stats, f.reevaluated, f.held_out);
+  }
+  print_stats_row(out, "base params", c.params_written.empty() ? "paper defaults" : c.params_written,
+                  evolve::CandidateStats{0, 0, 0, 0, 0, 0}, r.base.reevaluated, r.base.held_out);
+  out << "\nbest (fresh-seed fitness " << num(best.reevaluated.fitness) << " vs base "
+      << num(r.base.reevaluated.fitness) << "):\n";
+  for (const evolve::Gene& g : c.genome.genes) {
+    out << "  " << g.info->name << " = " << sim::format_value(best.params, *g.info) << "   (base "
+        << sim::format_value(c.genome.base, *g.info) << ")\n";
+  }
+  out << "wrote " << dir << "/{best.toml, log.csv, fitness.svg, run.json, checkpoint.json}\n";
+  return kExitOk;
+}
+
+}  // namespace
+
+Runner add_evolve(CLI::App& app) {
+  auto o = std::make_shared<EvolveOptions>();
+  app.add_option("--config", o->config, "Evolve config (TOML), e.g. configs/evolve/default.toml")->required();
+  app.add_option("--out", o->out, "Output folder (default: results/evolve/<config name>)");
+  app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");
+  app.add_option("--generations", o->generations,
+                 "Run this many generations in all (replaces the config's budget; with --resume, the total)");
+  app.add_flag("--resume", o->resume, "Continue the run in the output folder from its checkpoint.json");
+  app.add_flag("--no-wall-time", o->no_wall_time,
+               "Record 0 for every wall time (log.csv, checkpoint) so that runs compare bit for bit");
+  return [o](std::ostream& out, std::ostream& err) { return run_evolve(*o, out, err); };
+}
+
+}  // namespace swarmpath::app

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// The whole state of an evolution run between generations (optimiser state with its random
+// generator, generation, evaluation count, per-generation log, best-so-far list, config hash)
+// as JSON, written atomically after every generation so that --resume continues exactly.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "evolve/fitness.hpp"
+#include "evolve/optim/optimizer.hpp"
+
+namespace swarmpath::evolve {
+
+/// One generation: a row of log.csv.
+struct GenerationRecord {
+  std::int64_t generation = 0;     ///< 0-based
+  double best = 0.0;               ///< lowest candidate fitness (mean over the cases)
+  double mean = 0.0;               ///< mean candidate fitness
+  double std = 0.0;                ///< population standard deviation of the candidate fitness
+  double best_so_far = 0.0;        ///< lowest candidate fitness up to this generation
+  double best_success_rate = 0.0;  ///< success rate of this generation's best candidate
+  std::int64_t evaluations = 0;    ///< candidates evaluated so far (all generations)
+  double seconds = 0.0;            ///< wall time so far, resumes included (0 without wall time)
+};
+
+/// A distinct candidate among the best so far, by its generation mean.
+struct Elite {
+  Vector x;                    ///< the optimiser's coordinates
+  std::vector<double> values;  ///< its decoded tuned values (what makes candidates distinct)
+  CandidateStats stats;        ///< over its generation's cases (the best, if it came back)
+  std::int64_t generation = 0;
+  int candidate = 0;  ///< index in its generation's batch
+};
+
+/// Everything a resume needs.
+struct RunState {
+  std::string config_hash;
+  std::int64_t generation = 0;   ///< generations completed
+  std::int64_t evaluations = 0;  ///< candidates evaluated
+  std::int64_t runs = 0;         ///< simulations run (penalised candidates run none)
+  double seconds = 0.0;          ///< recorded wall time (0 without wall time)
+  nlohmann::json optimizer;      ///< Optimizer::state()
+  std::vector<GenerationRecord> history;
+  std::vector<Elite> elites;  ///< sorted: fitness, then generation, then candidate
+};
+
+nlohmann::ordered_json stats_json(const CandidateStats& s);
+CandidateStats stats_from_json(const nlohmann::json& j);
+
+nlohmann::ordered_json checkpoint_json(const RunState& s);
+
+/// Throws std::runtime_error naming what is missing or malformed.
+RunState checkpoint_from_json(const nlohmann::json& j);
+
+/// Reads DIR/checkpoint.json; throws ConfigError when it is missing or unreadable.
+RunState read_checkpoint(const std::string& path);
+
+/// Writes `text` to path.tmp, then renames it over `path` (readers never see half a file).
+void write_file_atomic(const std::string& path, const std::string& text);
+
+}  // namespace swarmpath::evolve

@@ -1,0 +1,410 @@
+// SPDX-License-Identifier: MIT
+#include "evolve_config.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "evolve/params_export.hpp"
+#include "sim/config_error.hpp"
+#include "sim/hash.hpp"
+#include "sim/scenario.hpp"
+#include "sim/toml_reader.hpp"
+
+namespace swarmpath::evolve {
+
+namespace {
+
+using sim::TableReader;
+
+std::string fmt(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
+std::uint64_t file_hash(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string s = text.str();
+  sim::Fnv1a h;
+  h.add_bytes(s.data(), s.size());
+  return h.value();
+}
+
+ScenarioRef scenario_ref(const TableReader& t, std::string_view key, const std::string& written,
+                         const std::string& base_dir) {
+  const std::optional<std::string> path = resolve_path(written, base_dir);
+  if (!path) {
+    t.fail(key, "scenario file \"" + written + "\" not found (looked in " +
+                    (base_dir.empty() ? "." : base_dir) + " and the working directory)");
+  }
+  return {written, *path, file_hash(*path)};
+}
+
+std::vector<ScenarioRef> scenario_list(const TableReader& t, std::string_view key,
+                                       const std::string& base_dir) {
+  std::vector<ScenarioRef> out;
+  for (const std::string& w : t.strings(key)) out.push_back(scenario_ref(t, key, w, base_dir));
+  return out;
+}
+
+int int_in(const TableReader& t, std::string_view key, std::int64_t fallback, std::int64_t lo,
+           std::int64_t hi) {
+  const std::int64_t v = t.integer_or(key, fallback);
+  if (v < lo || v > hi) {
+    t.fail(key, "must lie in [" + std::to_string(lo) + ", " + std::to_string(hi) + "] (got " +
+                    std::to_string(v) + ")");
+  }
+  return static_cast<int>(v);
+}
+
+double number_in(const TableReader& t, std::string_view key, double fallback, double lo, double hi) {
+  const double v = t.number_or(key, fallback);
+  if (v < lo || v > hi) t.fail(key, "must lie in [" + fmt(lo) + ", " + fmt(hi) + "] (got " + fmt(v) + ")");
+  return v;
+}
+
+Gene read_gene(const TableReader& tune, const std::string& key) {
+  const sim::ParamInfo* info = sim::find_param(key);
+  if (info == nullptr) {
+    tune.fail(key, "unknown parameter (the names are those of SPEC §7, as in genomes/paper.toml)");
+  }
+  Gene g = default_gene(*info);
+  const std::optional<TableReader> t = tune.table(key);
+  if (g.binary()) {
+    if (!t->keys().empty()) {
+      t->fail(t->keys().front(), "a bool or choice parameter takes no settings (write " + key + " = {})");
+    }
+    return g;
+  }
+  const std::string range = "[" + fmt(info->lo) + ", " + fmt(info->hi) + "]";
+  g.lo = t->number_or("lo", info->lo);
+  g.hi = t->number_or("hi", info->hi);
+  if (g.lo < info->lo || g.lo > info->hi) {
+    t->fail("lo",
+            "lies outside " + key + "'s range " + range + " (SPEC §7 row " + std::to_string(info->row) + ")");
+  }
+  if (g.hi < info->lo || g.hi > info->hi) {
+    t->fail("hi",
+            "lies outside " + key + "'s range " + range + " (SPEC §7 row " + std::to_string(info->row) + ")");
+  }
+  if (g.lo >= g.hi)
+    t->fail(t->has("lo") ? "lo" : "hi", "lo (" + fmt(g.lo) + ") must be < hi (" + fmt(g.hi) + ")");
+  g.log = t->boolean_or("log", false);
+  if (g.log && g.lo <= 0.0) t->fail("log", "a log scale needs lo > 0 (lo = " + fmt(g.lo) + ")");
+  const bool integer_type = info->type == sim::ParamType::kInteger;
+  const bool integer = t->boolean_or("integer", integer_type);
+  if (integer_type && !integer) t->fail("integer", key + " is an integer parameter");
+  g.integer = integer;
+  g.step = t->number_or("step", 0.0);
+  if (g.step < 0.0 || g.step > g.hi - g.lo) {
+    t->fail("step", "must lie in [0, hi - lo] = [0, " + fmt(g.hi - g.lo) + "] (0: continuous)");
+  }
+  if (g.integer) {
+    if (g.step != std::floor(g.step)) t->fail("step", "an integer parameter needs a whole step");
+    if (std::ceil(g.lo) > std::floor(g.hi)) t->fail("hi", "no whole number lies in [lo, hi]");
+  }
+  t->finish();
+  return g;
+}
+
+void read_tune(EvolveConfig& c, const TableReader& root) {
+  const TableReader tune = root.required_table("tune");
+  for (const std::string& key : tune.keys()) c.genome.genes.push_back(read_gene(tune, key));
+  tune.finish();
+  if (c.genome.genes.empty()) root.fail("tune", "name at least one parameter to tune, e.g. v_max = {}");
+  // genes in SPEC §7 row order (the descriptor table's order), whatever order the file uses
+  const auto table = sim::param_table();
+  const auto rank = [&](const Gene& g) { return g.info - table.data(); };
+  std::sort(c.genome.genes.begin(), c.genome.genes.end(),
+            [&](const Gene& a, const Gene& b) { return rank(a) < rank(b); });
+  // the base value of every tuned parameter must lie in its bounds (it is the start point)
+  for (const Gene& g : c.genome.genes) {
+    const double v = sim::get_value(c.genome.base, *g.info);
+    if (!g.binary() && (v < g.lo || v > g.hi)) {
+      const TableReader t = *tune.table(g.info->name);
+      t.fail(t.has("lo") && v < g.lo ? "lo" : (t.has("hi") ? "hi" : "lo"),
+             "the base value " + fmt(v) + " of " + std::string(g.info->name) + " lies outside [" + fmt(g.lo) +
+                 ", " + fmt(g.hi) + "]: the run starts from the base params");
+    }
+  }
+}
+
+void read_evaluation(EvolveConfig& c, const TableReader& root, const std::string& base_dir) {
+  const TableReader t = root.required_table("evaluation");
+  EvaluationSet& e = c.evaluation;
+  e.scenarios = scenario_list(t, "scenarios", base_dir);
+  if (e.scenarios.empty())
+    t.fail("scenarios", "the evaluation set is empty: name at least one scenario file");
+  if (t.has("robots")) {
+    for (const double n : t.numbers("robots")) {
+      if (n != std::floor(n) || n < 1 || n > sim::kMaxRobots) {
+        t.fail("robots",
+               "robot counts must be whole numbers in [1, " + std::to_string(sim::kMaxRobots) + "]");
+      }
+      e.robots.push_back(static_cast<int>(n));
+    }
+    if (e.robots.empty()) t.fail("robots", "the evaluation set is empty: give at least one robot count");
+  } else {
+    t.allow("robots");
+  }
+  e.seeds = int_in(t, "seeds", 2, 1, 100000);
+  if (t.has("max_ticks")) {
+    const std::int64_t m = t.integer("max_ticks");
+    if (m < 1 || m > sim::kMaxTicks)
+      t.fail("max_ticks", "must lie in [1, " + std::to_string(sim::kMaxTicks) + "]");
+    e.max_ticks = m;
+  } else {
+    t.allow("max_ticks");
+  }
+  e.fixed_seeds = t.boolean_or("fixed_seeds", false);
+  t.finish();
+  // every scenario must load and take every robot count
+  for (const ScenarioRef& ref : e.scenarios) {
+    const sim::Scenario s = sim::load_scenario(ref.path);
+    for (const int n : e.robots) {
+      if (const std::string err = sim::check_robot_count(s, n); !err.empty()) {
+        t.fail("robots", ref.written + ": " + err);
+      }
+    }
+  }
+}
+
+void read_fitness(EvolveConfig& c, const TableReader& root) {
+  const std::optional<TableReader> t = root.table("fitness");
+  if (!t) return;
+  FitnessWeights& w = c.fitness;
+  w.w_fail = number_in(*t, "w_fail", w.w_fail, 0.0, 1e6);
+  w.w_time = number_in(*t, "w_time", w.w_time, 0.0, 1e6);
+  w.w_path = number_in(*t, "w_path", w.w_path, 0.0, 1e6);
+  w.w_robots = number_in(*t, "w_robots", w.w_robots, 0.0, 1e6);
+  w.fail_path_ratio = number_in(*t, "fail_path_ratio", w.fail_path_ratio, 1.0, 1e6);
+  t->finish();
+  if (w.w_fail + w.w_time + w.w_path + w.w_robots <= 0.0)
+    t->fail("w_fail", "at least one weight must be > 0");
+}
+
+void read_optimizer(EvolveConfig& c, const TableReader& root) {
+  OptimizerSettings& o = c.optimizer;
+  const std::optional<TableReader> t = root.table("optimizer");
+  if (t) {
+    o.name = t->string_or("name", o.name);
+    o.population = int_in(*t, "population", o.population, 0, 100000);
+    o.sigma0 = number_in(*t, "sigma0", o.sigma0, 1e-6, 1.0);
+    o.ipop_restarts = int_in(*t, "ipop_restarts", o.ipop_restarts, 0, 20);
+    o.crossover_rate = number_in(*t, "crossover_rate", o.crossover_rate, 0.0, 1.0);
+    o.mutation_sigma = number_in(*t, "mutation_sigma", o.mutation_sigma, 0.0, 10.0);
+    o.mutation_rate = number_in(*t, "mutation_rate", o.mutation_rate, 0.0, 1.0);
+    o.tournament = int_in(*t, "tournament", o.tournament, 1, 100000);
+    o.elites = int_in(*t, "elites", o.elites, 0, 100000);
+    o.max_evaluations = int_in(*t, "max_evaluations", o.max_evaluations, 0, 100000000);
+    o.xtol_rel = number_in(*t, "xtol_rel", o.xtol_rel, 0.0, 1.0);
+    t->finish();
+  }
+  const std::vector<std::string> names = optimizer_names();
+  const auto fail = [&](std::string_view key, const std::string& message) {
+    if (t) t->fail(key, message);
+    root.fail("optimizer", message);
+  };
+  if (std::find(names.begin(), names.end(), o.name) == names.end()) {
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    fail("name", "unknown optimiser \"" + o.name + "\" (choices: " + list + ")");
+  }
+  // the optimiser checks its own settings: build it once on this genome
+  try {
+    (void)make_optimizer(o, c.genome.bounds(), encode(c.genome, c.genome.base), 0);
+  } catch (const std::invalid_argument& e) {
+    fail("name", e.what());
+  }
+}
+
+void read_budget(EvolveConfig& c, const TableReader& root) {
+  const TableReader t = root.required_table("budget");
+  Budget& b = c.budget;
+  b.generations = int_in(t, "generations", 0, 0, 10000000);
+  const std::int64_t evaluations = t.integer_or("evaluations", 0);
+  if (evaluations < 0) t.fail("evaluations", "must be >= 0 (0: no limit)");
+  b.evaluations = evaluations;
+  b.wall_seconds = number_in(t, "wall_seconds", 0.0, 0.0, 1e9);
+  t.finish();
+  if (b.generations == 0 && b.evaluations == 0 && b.wall_seconds == 0.0) {
+    t.fail("generations", "set at least one of generations, evaluations, wall_seconds");
+  }
+}
+
+void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string& base_dir) {
+  const std::optional<TableReader> t = root.table("reevaluate");
+  if (!t) return;
+  Reevaluation& r = c.reevaluate;
+  r.top_k = int_in(*t, "top_k", r.top_k, 1, 1000);
+  r.seeds = int_in(*t, "seeds", r.seeds, 1, 100000);
+  if (t->has("held_out")) {
+    r.held_out = scenario_list(*t, "held_out", base_dir);
+  } else {
+    t->allow("held_out");
+  }
+  t->finish();
+  for (const ScenarioRef& ref : r.held_out) {
+    const sim::Scenario s = sim::load_scenario(ref.path);
+    for (const int n : c.evaluation.robots) {
+      if (const std::string err = sim::check_robot_count(s, n); !err.empty()) {
+        t->fail("held_out", ref.written + ": " + err);
+      }
+    }
+  }
+}
+
+EvolveConfig parse(const sim::TomlDoc& doc, const std::string& base_dir) {
+  EvolveConfig c;
+  c.file = doc.name();
+  const TableReader root(doc, doc.root(), "");
+  c.name = root.string_or("name", std::filesystem::path(doc.name()).stem().string());
+  if (c.name.empty() || !std::all_of(c.name.begin(), c.name.end(), [](char ch) {
+        return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.';
+      })) {
+    root.fail(
+        "name",
+        "must be a non-empty file name of letters, digits, '_', '-' and '.' (it names the output folder)");
+  }
+  if (root.has("params")) {
+    c.params_written = root.string("params");
+    const std::optional<std::string> path = resolve_path(c.params_written, base_dir);
+    if (!path) root.fail("params", "params file \"" + c.params_written + "\" not found");
+    c.params_file = *path;
+    c.genome.base = sim::load_params(c.params_file);
+  } else {
+    root.allow("params");
+  }
+  const std::string mode = root.string_or("mode", "pf");
+  const std::optional<sim::Mode> m = sim::parse_mode(mode);
+  if (!m || *m == sim::Mode::kDiffusion) root.fail("mode", "must be \"pf\" or \"ta\", got \"" + mode + "\"");
+  c.mode = *m;
+  const std::int64_t seed = root.integer_or("seed", 1);
+  if (seed < 0) root.fail("seed", "must be >= 0");
+  c.seed = static_cast<std::uint64_t>(seed);
+  read_tune(c, root);
+  read_evaluation(c, root, base_dir);
+  read_fitness(c, root);
+  read_optimizer(c, root);
+  read_budget(c, root);
+  read_reevaluate(c, root, base_dir);
+  root.finish();
+  return c;
+}
+
+nlohmann::ordered_json refs_json(const std::vector<ScenarioRef>& refs) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::array();
+  for (const ScenarioRef& r : refs) j.push_back(r.written);
+  return j;
+}
+
+nlohmann::ordered_json ref_hashes_json(const std::vector<ScenarioRef>& refs) {
+  nlohmann::ordered_json j = nlohmann::ordered_json::array();
+  for (const ScenarioRef& r : refs) j.push_back(sim::to_hex(r.content_hash));
+  return j;
+}
+
+}  // namespace
+
+std::optional<std::string> resolve_path(const std::string& path, const std::string& base_dir) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path p(path);
+  if (p.is_absolute()) return fs::is_regular_file(p, ec) ? std::optional<std::string>(path) : std::nullopt;
+  if (!base_dir.empty()) {
+    const fs::path q = (fs::path(base_dir) / p).lexically_normal();
+    if (fs::is_regular_file(q, ec)) return q.string();
+  }
+  if (fs::is_regular_file(p, ec)) return path;
+  return std::nullopt;
+}
+
+EvolveConfig load_evolve_config(const std::string& path) {
+  const sim::TomlDoc doc = sim::TomlDoc::parse_file(path);
+  return parse(doc, std::filesystem::path(path).parent_path().string());
+}
+
+EvolveConfig parse_evolve_config(std::string_view text, const std::string& name,
+                                 const std::string& base_dir) {
+  const sim::TomlDoc doc = sim::TomlDoc::parse_string(text, name);
+  return parse(doc, base_dir);
+}
+
+nlohmann::ordered_json config_json(const EvolveConfig& c) {
+  nlohmann::ordered_json j;
+  j["name"] = c.name;
+  j["file"] = c.file;
+  j["params"] =
+      c.params_written.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(c.params_written);
+  j["mode"] = std::string(sim::to_string(c.mode));
+  j["seed"] = c.seed;
+  nlohmann::ordered_json tune = nlohmann::ordered_json::array();
+  for (const Gene& g : c.genome.genes) {
+    nlohmann::ordered_json t;
+    t["name"] = std::string(g.info->name);
+    if (g.binary()) {
+      t["binary"] = true;
+    } else {
+      t["lo"] = g.lo;
+      t["hi"] = g.hi;
+      t["step"] = g.step;
+      t["integer"] = g.integer;
+      t["log"] = g.log;
+    }
+    tune.push_back(t);
+  }
+  j["tune"] = tune;
+  const EvaluationSet& e = c.evaluation;
+  j["evaluation"] = {
+      {"scenarios", refs_json(e.scenarios)},
+      {"scenario_hashes", ref_hashes_json(e.scenarios)},
+      {"robots", e.robots},
+      {"seeds", e.seeds},
+      {"max_ticks", e.max_ticks ? nlohmann::ordered_json(*e.max_ticks) : nlohmann::ordered_json(nullptr)},
+      {"fixed_seeds", e.fixed_seeds}};
+  const FitnessWeights& w = c.fitness;
+  j["fitness"] = {{"w_fail", w.w_fail},
+                  {"w_time", w.w_time},
+                  {"w_path", w.w_path},
+                  {"w_robots", w.w_robots},
+                  {"fail_path_ratio", w.fail_path_ratio}};
+  const OptimizerSettings& o = c.optimizer;
+  j["optimizer"] = {{"name", o.name},
+                    {"population", o.population},
+                    {"sigma0", o.sigma0},
+                    {"ipop_restarts", o.ipop_restarts},
+                    {"crossover_rate", o.crossover_rate},
+                    {"mutation_sigma", o.mutation_sigma},
+                    {"mutation_rate", o.mutation_rate},
+                    {"tournament", o.tournament},
+                    {"elites", o.elites},
+                    {"max_evaluations", o.max_evaluations},
+                    {"xtol_rel", o.xtol_rel}};
+  j["budget"] = {{"generations", c.budget.generations},
+                 {"evaluations", c.budget.evaluations},
+                 {"wall_seconds", c.budget.wall_seconds}};
+  j["reevaluate"] = {{"top_k", c.reevaluate.top_k},
+                     {"seeds", c.reevaluate.seeds},
+                     {"held_out", refs_json(c.reevaluate.held_out)},
+                     {"held_out_hashes", ref_hashes_json(c.reevaluate.held_out)}};
+  j["base_params"] = params_values_json(c.genome.base);
+  return j;
+}
+
+std::string config_hash(const EvolveConfig& c) {
+  nlohmann::ordered_json j = config_json(c);
+  j.erase("budget");
+  j.erase("file");  // the same config under another name or folder resumes
+  const std::string text = j.dump();
+  sim::Fnv1a h;
+  h.add_bytes(text.data(), text.size());
+  return sim::to_hex(h.value());
+}
+
+}  // namespace swarmpath::evolve

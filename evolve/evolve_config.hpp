@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: MIT
+// An evolve config (configs/evolve/*.toml): the base params file, the tuned parameters and
+// their bounds, the evaluation set, the mode, the fitness weights, the optimiser, the budget,
+// the master seed and the final re-evaluation. Read strictly: unknown keys, wrong types and
+// impossible values are ConfigErrors naming file:line:key.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "evolve/fitness.hpp"
+#include "evolve/genome.hpp"
+#include "evolve/optim/optimizer.hpp"
+#include "sim/controller.hpp"
+#include "sim/params.hpp"
+
+namespace swarmpath::evolve {
+
+/// A scenario file named by a config.
+struct ScenarioRef {
+  std::string written;             ///< as the config writes it (what config_json shows)
+  std::string path;                ///< resolved (see resolve_path)
+  std::uint64_t content_hash = 0;  ///< FNV-1a of the file's bytes (part of the config hash)
+};
+
+/// Which simulations score a candidate: every scenario x robot count x seed.
+struct EvaluationSet {
+  std::vector<ScenarioRef> scenarios;
+  std::vector<int> robots;                ///< robot counts; empty: each scenario's own count
+  int seeds = 2;                          ///< seeds per (scenario, robots) and candidate
+  std::optional<std::int64_t> max_ticks;  ///< overrides every scenario's T_max
+  bool fixed_seeds = false;               ///< true: every generation reuses generation 0's seeds
+};
+
+/// When the run stops (the first limit reached; 0 = no limit; at least one is set).
+struct Budget {
+  int generations = 0;
+  std::int64_t evaluations = 0;  ///< candidates evaluated (one fitness value each)
+  double wall_seconds = 0.0;     ///< wall time across resumes (makes the run length machine-dependent)
+};
+
+/// The end of a run: the best few distinct candidates on fresh seeds (and held-out scenarios).
+struct Reevaluation {
+  int top_k = 3;                      ///< finalists, distinct by their decoded params
+  int seeds = 4;                      ///< fresh seeds per (scenario, robots)
+  std::vector<ScenarioRef> held_out;  ///< extra scenarios, reported, not used to choose
+};
+
+struct EvolveConfig {
+  std::string file;            ///< the config file (as given)
+  std::string name;            ///< run name: the `name` key or the file's stem
+  std::string params_written;  ///< base params file as written; empty: the paper's defaults
+  std::string params_file;     ///< the same, resolved
+  sim::Mode mode = sim::Mode::kPathFormation;
+  std::uint64_t seed = 1;  ///< master seed
+  Genome genome;           ///< tuned parameters on top of the base params
+  EvaluationSet evaluation;
+  FitnessWeights fitness;
+  OptimizerSettings optimizer;
+  Budget budget;
+  Reevaluation reevaluate;
+};
+
+/// Loads and checks an evolve config (scenario and params files included). Relative paths in
+/// it are resolved against the config file's folder first, then the working directory.
+EvolveConfig load_evolve_config(const std::string& path);
+
+/// The same from text; `name` stands for the file, `base_dir` for its folder.
+EvolveConfig parse_evolve_config(std::string_view text, const std::string& name, const std::string& base_dir);
+
+/// The config as JSON, every value explicit (defaults filled in, base params listed in full).
+nlohmann::ordered_json config_json(const EvolveConfig& c);
+
+/// FNV-1a of config_json without the budget (a resume may extend the budget), as 16 hex digits.
+/// A checkpoint remembers it; resuming under another hash is refused.
+std::string config_hash(const EvolveConfig& c);
+
+/// `path` if absolute; else `base_dir/path` when that exists, else `path` itself when that
+/// exists (relative to the working directory), else nullopt.
+std::optional<std::string> resolve_path(const std::string& path, const std::string& base_dir);
+
+}  // namespace swarmpath::evolve

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: MIT
+#include "evolve/optim/ga.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <utility>
+
+namespace swarmpath::evolve {
+namespace {
+
+/// One side of bounded SBX: the spread factor beta_q for a child on the side with `room` to its bound.
+double sbx_beta_q(double u, double room_over_gap, double eta) {
+  const double beta = 1.0 + 2.0 * room_over_gap;
+  const double alpha = 2.0 - std::pow(beta, -(eta + 1.0));
+  return u <= 1.0 / alpha ? std::pow(u * alpha, 1.0 / (eta + 1.0))
+                          : std::pow(1.0 / (2.0 - u * alpha), 1.0 / (eta + 1.0));
+}
+
+}  // namespace
+
+GeneticAlgorithm::GeneticAlgorithm(const OptimizerSettings& s, const Bounds& b, const Vector& x0,
+                                   std::uint64_t seed)
+    : box_(b), x0_(x0), rng_(seed) {
+  if (s.population < 0 || s.population == 1) {
+    throw std::invalid_argument("ga: population must be >= 2 (or 0 for the default " +
+                                std::to_string(kDefaultPopulation) + "), got " +
+                                std::to_string(s.population));
+  }
+  size_ = static_cast<std::size_t>(s.population > 0 ? s.population : kDefaultPopulation);
+  if (!(s.crossover_rate >= 0.0 && s.crossover_rate <= 1.0)) {
+    throw std::invalid_argument("ga: crossover_rate must be in [0, 1], got " +
+                                std::to_string(s.crossover_rate));
+  }
+  if (!(s.mutation_sigma > 0.0 && std::isfinite(s.mutation_sigma))) {
+    throw std::invalid_argument("ga: mutation_sigma must be > 0, got " + std::to_string(s.mutation_sigma));
+  }
+  if (!(s.mutation_rate >= 0.0 && s.mutation_rate <= 1.0)) {
+    throw std::invalid_argument("ga: mutation_rate must be in [0, 1] (0: 1/n), got " +
+                                std::to_string(s.mutation_rate));
+  }
+  if (s.tournament < 1) {
+    throw std::invalid_argument("ga: tournament must be >= 1, got " + std::to_string(s.tournament));
+  }
+  if (s.elites < 0 || static_cast<std::size_t>(s.elites) >= size_) {
+    throw std::invalid_argument("ga: elites must be in [0, population - 1], got " + std::to_string(s.elites) +
+                                " with population " + std::to_string(size_));
+  }
+  crossover_rate_ = s.crossover_rate;
+  mutation_sigma_ = s.mutation_sigma;
+  mutation_rate_ = s.mutation_rate > 0.0 ? s.mutation_rate : 1.0 / static_cast<double>(b.dim());
+  tournament_ = static_cast<std::size_t>(s.tournament);
+  elites_ = static_cast<std::size_t>(s.elites);
+}
+
+std::vector<std::size_t> GeneticAlgorithm::ranked() const {
+  std::vector<std::size_t> order(population_.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return fitness_[a] < fitness_[b]; });
+  return order;
+}
+
+std::size_t GeneticAlgorithm::tournament() {
+  // k contestants drawn with replacement; the fittest (then the lowest index) wins
+  std::size_t winner = rng_.below(population_.size());
+  for (std::size_t k = 1; k < tournament_; ++k) {
+    const std::size_t c = rng_.below(population_.size());
+    if (fitness_[c] < fitness_[winner] || (fitness_[c] == fitness_[winner] && c < winner)) winner = c;
+  }
+  return winner;
+}
+
+void GeneticAlgorithm::crossover(Vector& a, Vector& b) {
+  // bounded SBX on [0,1] (Deb & Agrawal 1995; Deb's NSGA-II realcross): each gene with probability 1/2
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (!rng_.bernoulli(0.5)) continue;
+    const double lo = std::min(a[i], b[i]);
+    const double hi = std::max(a[i], b[i]);
+    const double gap = hi - lo;
+    if (gap < 1e-14) continue;
+    const double u = rng_.uniform();
+    const double c1 = 0.5 * ((lo + hi) - sbx_beta_q(u, lo / gap, kSbxEta) * gap);
+    const double c2 = 0.5 * ((lo + hi) + sbx_beta_q(u, (1.0 - hi) / gap, kSbxEta) * gap);
+    const bool swap = rng_.bernoulli(0.5);
+    a[i] = std::clamp(swap ? c2 : c1, 0.0, 1.0);
+    b[i] = std::clamp(swap ? c1 : c2, 0.0, 1.0);
+  }
+}
+
+void GeneticAlgorithm::mutate(Vector& genes) {
+  for (double& g : genes) {
+    if (rng_.bernoulli(mutation_rate_)) g = std::clamp(g + mutation_sigma_ * rng_.normal(), 0.0, 1.0);
+  }
+}
+
+std::vector<Vector> GeneticAlgorithm::ask() {
+  if (!asked_.empty()) return asked_;
+  if (population_.empty()) {
+    // generation 0: x0 and uniform points
+    asked_.push_back(x0_);
+    asked_unit_.push_back(box_.to_unit(x0_));
+    while (asked_unit_.size() < size_) {
+      Vector u(box_.dim());
+      for (double& ui : u) ui = rng_.uniform();
+      asked_unit_.push_back(u);
+      asked_.push_back(box_.from_unit(u));
+    }
+    return asked_;
+  }
+  const std::size_t children = size_ - elites_;
+  while (asked_unit_.size() < children) {
+    Vector a = population_[tournament()];
+    Vector b = population_[tournament()];
+    if (rng_.bernoulli(crossover_rate_)) crossover(a, b);
+    mutate(a);
+    mutate(b);
+    asked_unit_.push_back(std::move(a));
+    if (asked_unit_.size() < children) asked_unit_.push_back(std::move(b));
+  }
+  for (const auto& u : asked_unit_) asked_.push_back(box_.from_unit(u));
+  return asked_;
+}
+
+void GeneticAlgorithm::tell(const std::vector<Vector>& candidates, const std::vector<double>& fitness) {
+  const std::vector<double> f = checked_fitness(asked_, candidates, fitness);
+  best_.update(candidates, f);
+  // generational replacement: the elites survive, the children fill the rest
+  std::vector<Vector> next;
+  std::vector<double> next_f;
+  if (!population_.empty()) {
+    const auto order = ranked();
+    for (std::size_t e = 0; e < elites_; ++e) {
+      next.push_back(population_[order[e]]);
+      next_f.push_back(fitness_[order[e]]);
+    }
+  }
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    next.push_back(std::move(asked_unit_[i]));
+    next_f.push_back(f[i]);
+  }
+  population_ = std::move(next);
+  fitness_ = std::move(next_f);
+  asked_.clear();
+  asked_unit_.clear();
+}
+
+nlohmann::json GeneticAlgorithm::state() const {
+  auto j = state_header(name(), box_.dim());
+  j["rng"] = rng_to_json(rng_);
+  j["population"] = vectors_to_json(population_);
+  j["fitness"] = vector_to_json(fitness_);
+  j["asked_unit"] = vectors_to_json(asked_unit_);
+  j["asked"] = vectors_to_json(asked_);
+  j["best"] = best_.to_json();
+  return j;
+}
+
+void GeneticAlgorithm::restore(const nlohmann::json& state) {
+  check_state_header(state, name(), box_.dim());
+  rng_from_json(state.at("rng"), rng_);
+  population_ = vectors_from_json(state.at("population"));
+  fitness_ = vector_from_json(state.at("fitness"));
+  asked_unit_ = vectors_from_json(state.at("asked_unit"));
+  asked_ = vectors_from_json(state.at("asked"));
+  best_ = BestSoFar::from_json(state.at("best"));
+  if (population_.size() != fitness_.size() || asked_.size() != asked_unit_.size()) {
+    throw std::invalid_argument("ga state: population/fitness or asked sizes differ");
+  }
+}
+
+}  // namespace swarmpath::evolve
