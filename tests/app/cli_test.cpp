@@ -15,20 +15,13 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "tests/app/cli_support.hpp"
+
 namespace swarmpath::app {
 namespace {
 
-struct Result {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-Result cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = run_cli(args, out, err);
-  return {code, out.str(), err.str()};
-}
+using Result = cli_support::CliResult;
+using cli_support::cli;
 
 std::string env(int k) {
   return std::string(SWARMPATH_SOURCE_DIR) + "/configs/scenarios/paper/env" + std::to_string(k) + ".toml";

@@ -11,6 +11,7 @@
 #include "evolve/genome.hpp"
 #include "evolve_test_support.hpp"
 #include "sim/params.hpp"
+#include "tests/app/cli_support.hpp"
 
 namespace swarmpath::app {
 namespace {
@@ -20,17 +21,8 @@ using evolve::testing::scratch;
 using evolve::testing::source;
 using evolve::testing::write_text;
 
-struct Result {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-Result cli(const std::vector<std::string>& args) {
-  std::ostringstream out, err;
-  const int code = run_cli(args, out, err);
-  return {code, out.str(), err.str()};
-}
+using Result = cli_support::CliResult;
+using cli_support::cli;
 
 TEST(CliEvolve, HelpForEachCommand) {
   Result r = cli({"--help"});
