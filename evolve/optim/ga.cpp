@@ -7,18 +7,9 @@
 #include <stdexcept>
 #include <utility>
 
+#include "evolve/optim/variation.hpp"
+
 namespace swarmpath::evolve {
-namespace {
-
-/// One side of bounded SBX: the spread factor beta_q for a child on the side with `room` to its bound.
-double sbx_beta_q(double u, double room_over_gap, double eta) {
-  const double beta = 1.0 + 2.0 * room_over_gap;
-  const double alpha = 2.0 - std::pow(beta, -(eta + 1.0));
-  return u <= 1.0 / alpha ? std::pow(u * alpha, 1.0 / (eta + 1.0))
-                          : std::pow(1.0 / (2.0 - u * alpha), 1.0 / (eta + 1.0));
-}
-
-}  // namespace
 
 GeneticAlgorithm::GeneticAlgorithm(const OptimizerSettings& s, const Bounds& b, const Vector& x0,
                                    std::uint64_t seed)
@@ -72,22 +63,7 @@ std::size_t GeneticAlgorithm::tournament() {
   return winner;
 }
 
-void GeneticAlgorithm::crossover(Vector& a, Vector& b) {
-  // bounded SBX on [0,1] (Deb & Agrawal 1995; Deb's NSGA-II realcross): each gene with probability 1/2
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (!rng_.bernoulli(0.5)) continue;
-    const double lo = std::min(a[i], b[i]);
-    const double hi = std::max(a[i], b[i]);
-    const double gap = hi - lo;
-    if (gap < 1e-14) continue;
-    const double u = rng_.uniform();
-    const double c1 = 0.5 * ((lo + hi) - sbx_beta_q(u, lo / gap, kSbxEta) * gap);
-    const double c2 = 0.5 * ((lo + hi) + sbx_beta_q(u, (1.0 - hi) / gap, kSbxEta) * gap);
-    const bool swap = rng_.bernoulli(0.5);
-    a[i] = std::clamp(swap ? c2 : c1, 0.0, 1.0);
-    b[i] = std::clamp(swap ? c1 : c2, 0.0, 1.0);
-  }
-}
+void GeneticAlgorithm::crossover(Vector& a, Vector& b) { sbx_crossover(a, b, kSbxEta, rng_); }
 
 void GeneticAlgorithm::mutate(Vector& genes) {
   for (double& g : genes) {
@@ -98,15 +74,7 @@ void GeneticAlgorithm::mutate(Vector& genes) {
 std::vector<Vector> GeneticAlgorithm::ask() {
   if (!asked_.empty()) return asked_;
   if (population_.empty()) {
-    // generation 0: x0 and uniform points
-    asked_.push_back(x0_);
-    asked_unit_.push_back(box_.to_unit(x0_));
-    while (asked_unit_.size() < size_) {
-      Vector u(box_.dim());
-      for (double& ui : u) ui = rng_.uniform();
-      asked_unit_.push_back(u);
-      asked_.push_back(box_.from_unit(u));
-    }
+    first_generation(box_, x0_, size_, rng_, asked_unit_, asked_);
     return asked_;
   }
   const std::size_t children = size_ - elites_;

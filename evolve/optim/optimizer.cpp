@@ -14,6 +14,14 @@
 namespace swarmpath::evolve {
 namespace {
 
+std::string joined_names() {
+  std::string s;
+  for (const auto& n : optimizer_names()) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+}  // namespace
+
 void check_problem(const Bounds& b, const Vector& x0) {
   if (b.lower.empty()) throw std::invalid_argument("bounds: dimension is 0");
   if (b.upper.size() != b.lower.size()) {
@@ -39,14 +47,6 @@ void check_problem(const Bounds& b, const Vector& x0) {
     }
   }
 }
-
-std::string joined_names() {
-  std::string s;
-  for (const auto& n : optimizer_names()) s += (s.empty() ? "" : ", ") + n;
-  return s;
-}
-
-}  // namespace
 
 std::vector<std::string> optimizer_names() {
   std::vector<std::string> names = {"cmaes", "ga", "random"};

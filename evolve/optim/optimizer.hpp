@@ -70,6 +70,10 @@ class Optimizer {
   virtual void restore(const nlohmann::json& state) = 0;
 };
 
+/// Throws std::invalid_argument naming the problem unless the bounds are finite with lower < upper
+/// in every coordinate and x0 has their dimension and lies inside them.
+void check_problem(const Bounds& b, const Vector& x0);
+
 /// Builds an optimiser; x0 is the start point (inside the bounds), seed its only randomness.
 /// Throws std::invalid_argument naming the problem for unknown names or bad settings.
 std::unique_ptr<Optimizer> make_optimizer(const OptimizerSettings& s, const Bounds& b, const Vector& x0,
