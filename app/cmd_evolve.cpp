@@ -14,6 +14,8 @@
 #include "common.hpp"
 #include "evolve/evolve_config.hpp"
 #include "evolve/objective.hpp"
+#include "evolve/pareto_report.hpp"
+#include "evolve/pareto_runner.hpp"
 #include "evolve/runner.hpp"
 #include "sim/config_error.hpp"
 
@@ -73,6 +75,55 @@ void print_stats_row(std::ostream& out, const std::string& label, const std::str
       << num(fresh.mean_path_ratio) << " | " << fixed(fresh.mean_robots, 1) << " |\n";
 }
 
+std::string interval_text(const evolve::Interval& i, evolve::ObjectiveKind k) {
+  const int digits = k == evolve::ObjectiveKind::kTicks ? 0 : 3;
+  if (!std::isfinite(i.half_width)) return fixed(i.mean, digits);
+  return fixed(i.mean, digits) + " +- " + fixed(i.half_width, digits);
+}
+
+// the front on fresh seeds, the base params under it
+void print_pareto_summary(std::ostream& out, const evolve::EvolveConfig& c, const evolve::ParetoResult& r,
+                          const std::string& dir) {
+  out << "run " << c.name << ": " << r.state.generation << " generations, " << r.state.evaluations
+      << " evaluations, " << r.state.runs << " training runs; hypervolume " << num(r.hypervolume)
+      << " (re-evaluated " << num(r.reevaluated_hypervolume) << "); the " << r.front.size()
+      << " front points re-evaluated on " << r.reevaluation_cases.size()
+      << " fresh cases each (mean +- 95 % CI)\n\n";
+  out << "| point | found | success |";
+  for (const evolve::ObjectiveKind k : c.multi.objectives) out << ' ' << evolve::objective_title(k) << " |";
+  out << " note |\n|---|---|---|";
+  for (std::size_t k = 0; k < c.multi.objectives.size(); ++k) out << "---|";
+  out << "---|\n";
+  const auto row = [&](const std::string& label, const std::string& found, const evolve::FrontPoint& p,
+                       const std::string& note) {
+    out << "| " << label << " | " << found << " | " << fixed(100.0 * p.reevaluated.success_rate, 0) << " % |";
+    for (std::size_t k = 0; k < c.multi.objectives.size(); ++k) {
+      out << ' ' << interval_text(p.intervals[k], c.multi.objectives[k]) << " |";
+    }
+    out << ' ' << note << " |\n";
+  };
+  std::size_t dominating = 0;
+  for (std::size_t i = 0; i < r.front.size(); ++i) {
+    const evolve::FrontPoint& p = r.front[i];
+    std::string note;
+    if (p.reevaluated_violation > 0.0)
+      note = "infeasible after re-evaluation";
+    else if (p.dominated_after_reevaluation)
+      note = "dominated after re-evaluation";
+    if (p.dominates_base) note += std::string(note.empty() ? "" : "; ") + "dominates the base params";
+    dominating += p.dominates_base ? 1 : 0;
+    row(std::to_string(i),
+        "gen " + std::to_string(p.elite.generation) + " #" + std::to_string(p.elite.candidate), p, note);
+  }
+  row("base params", c.params_written.empty() ? "paper defaults" : c.params_written, r.base, "");
+  out << "\n"
+      << dominating << " of " << r.front.size()
+      << " front points dominate the base params on the fresh seeds\n";
+  out << "wrote " << dir << "/{pareto.csv, pareto.svg, front/000.toml.."
+      << (r.front.empty() ? "" : evolve::front_file_name(r.front.size() - 1))
+      << ", log.csv, hypervolume.svg, run.json, checkpoint.json}\n";
+}
+
 int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
   const evolve::EvolveConfig c = evolve::load_evolve_config(o.config);
   if (o.generations && *o.generations < 1) throw sim::ConfigError("--generations", 0, "", "must be >= 1");
@@ -122,22 +173,35 @@ int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
   };
   ro.progress = [&](std::size_t done, std::size_t total) {
     if (!tty) return;
-    err << "\r\033[K  generation " << in_flight << ": " << done << " / " << total << " runs, best so far "
-        << num(best_so_far) << ", " << fixed(clock.seconds(), 0) << " s" << std::flush;
+    err << "\r\033[K  generation " << in_flight << ": " << done << " / " << total << " runs, "
+        << (c.multi_objective() ? "hypervolume " : "best so far ") << num(best_so_far) << ", "
+        << fixed(clock.seconds(), 0) << " s" << std::flush;
   };
   ro.callbacks.push_back([&](const evolve::GenerationRecord& r, const evolve::RunState& st) {
-    best_so_far = r.best_so_far;
+    best_so_far = c.multi_objective() ? r.hypervolume : r.best_so_far;
     in_flight = r.generation + 1;
     const double t = clock.seconds();
     if (tty) err << "\r\033[K";
     err << "  generation " << r.generation
-        << (budget.generations > 0 ? "/" + std::to_string(budget.generations) : "") << ": best "
-        << num(r.best) << " (success " << fixed(100.0 * r.best_success_rate, 0) << " %), mean " << num(r.mean)
-        << " +- " << num(r.std) << ", best so far " << num(r.best_so_far) << ", " << r.evaluations
-        << " evaluations, " << fixed(t, 0) << " s, ETA " << fixed(eta_seconds(budget, st, gen0, eval0, t), 0)
-        << " s\n";
+        << (budget.generations > 0 ? "/" + std::to_string(budget.generations) : "") << ": ";
+    if (c.multi_objective()) {
+      err << "hypervolume " << num(r.hypervolume) << ", front " << r.front_size << ", feasible " << r.feasible
+          << ", best success " << fixed(100.0 * r.best_success_rate, 0) << " %";
+    } else {
+      err << "best " << num(r.best) << " (success " << fixed(100.0 * r.best_success_rate, 0) << " %), mean "
+          << num(r.mean) << " +- " << num(r.std) << ", best so far " << num(r.best_so_far);
+    }
+    err << ", " << r.evaluations << " evaluations, " << fixed(t, 0) << " s, ETA "
+        << fixed(eta_seconds(budget, st, gen0, eval0, t), 0) << " s\n";
     return false;
   });
+  if (c.multi_objective()) {
+    const evolve::ParetoResult r = evolve::run_pareto(c, objective, ro);
+    if (tty) err << "\r\033[K";
+    err << "  done in " << fixed(clock.seconds(), 1) << " s (stopped by " << r.stop_reason << ")\n";
+    print_pareto_summary(out, c, r, dir);
+    return kExitOk;
+  }
   const evolve::RunResult r = evolve::run_evolution(c, objective, ro);
   if (tty) err << "\r\033[K";
   err << "  done in " << fixed(clock.seconds(), 1) << " s (stopped by " << r.stop_reason << ")\n";
@@ -157,7 +221,7 @@ int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
                     f.elite.stats, f.reevaluated, f.held_out);
   }
   print_stats_row(out, "base params", c.params_written.empty() ? "paper defaults" : c.params_written,
-                  evolve::CandidateStats{0, 0, 0, 0, 0, 0}, r.base.reevaluated, r.base.held_out);
+                  evolve::CandidateStats{}, r.base.reevaluated, r.base.held_out);
   out << "\nbest (fresh-seed fitness " << num(best.reevaluated.fitness) << " vs base "
       << num(r.base.reevaluated.fitness) << "):\n";
   for (const evolve::Gene& g : c.genome.genes) {

@@ -15,7 +15,7 @@ namespace swarmpath::evolve {
 namespace {
 
 constexpr const char* kFormat = "swarmpath evolve checkpoint";
-constexpr int kVersion = 1;
+constexpr int kVersion = 2;  // 2: stats and history carry the multi-objective fields
 
 // NaN (no successful run) as null
 nlohmann::ordered_json number_or_null(double v) {
@@ -37,6 +37,7 @@ nlohmann::ordered_json stats_json(const CandidateStats& s) {
   j["mean_ticks"] = s.mean_ticks;
   j["mean_path_ratio"] = number_or_null(s.mean_path_ratio);
   j["mean_robots"] = s.mean_robots;
+  j["mean_robots_fraction"] = s.mean_robots_fraction;
   j["runs"] = s.runs;
   return j;
 }
@@ -49,6 +50,7 @@ CandidateStats stats_from_json(const nlohmann::json& j) {
   s.mean_ticks = j.at("mean_ticks").get<double>();
   s.mean_path_ratio = number_from(j, "mean_path_ratio");
   s.mean_robots = j.at("mean_robots").get<double>();
+  s.mean_robots_fraction = j.at("mean_robots_fraction").get<double>();
   s.runs = j.at("runs").get<int>();
   return s;
 }
@@ -72,7 +74,11 @@ nlohmann::ordered_json checkpoint_json(const RunState& s) {
                        {"best_so_far", r.best_so_far},
                        {"best_success_rate", r.best_success_rate},
                        {"evaluations", r.evaluations},
-                       {"seconds", r.seconds}});
+                       {"seconds", r.seconds},
+                       {"hypervolume", r.hypervolume},
+                       {"front_size", r.front_size},
+                       {"feasible", r.feasible},
+                       {"front_min", r.front_min}});
   }
   j["history"] = history;
   nlohmann::ordered_json elites = nlohmann::ordered_json::array();
@@ -112,6 +118,10 @@ RunState checkpoint_from_json(const nlohmann::json& j) {
       g.best_success_rate = r.at("best_success_rate").get<double>();
       g.evaluations = r.at("evaluations").get<std::int64_t>();
       g.seconds = r.at("seconds").get<double>();
+      g.hypervolume = r.at("hypervolume").get<double>();
+      g.front_size = r.at("front_size").get<int>();
+      g.feasible = r.at("feasible").get<int>();
+      g.front_min = r.at("front_min").get<Vector>();
       s.history.push_back(g);
     }
     for (const nlohmann::json& e : j.at("elites")) {
@@ -157,6 +167,12 @@ void write_file_atomic(const std::string& path, const std::string& text) {
   std::error_code ec;
   std::filesystem::rename(tmp, path, ec);
   if (ec) throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + ec.message());
+}
+
+void write_file_atomic(const std::string& path, const std::function<void(std::ostream&)>& write) {
+  std::ostringstream text;
+  write(text);
+  write_file_atomic(path, text.str());
 }
 
 }  // namespace swarmpath::evolve

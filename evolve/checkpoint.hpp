@@ -5,6 +5,8 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,11 @@ struct GenerationRecord {
   double best_success_rate = 0.0;  ///< success rate of this generation's best candidate
   std::int64_t evaluations = 0;    ///< candidates evaluated so far (all generations)
   double seconds = 0.0;            ///< wall time so far, resumes included (0 without wall time)
+  // multi-objective runs only (best, mean, std and best_so_far stay 0 there)
+  double hypervolume = 0.0;  ///< of the feasible front, against the config's reference point
+  int front_size = 0;        ///< points of the feasible non-dominated front
+  int feasible = 0;          ///< feasible candidates of this generation
+  Vector front_min;          ///< per objective, the front's lowest value (empty: no front)
 };
 
 /// A distinct candidate among the best so far, by its generation mean.
@@ -45,7 +52,8 @@ struct RunState {
   double seconds = 0.0;          ///< recorded wall time (0 without wall time)
   nlohmann::json optimizer;      ///< Optimizer::state()
   std::vector<GenerationRecord> history;
-  std::vector<Elite> elites;  ///< sorted: fitness, then generation, then candidate
+  std::vector<Elite> elites;  ///< sorted: fitness, then generation, then candidate; multi-objective
+                              ///< runs: the optimiser's population, in its order (front() is within)
 };
 
 nlohmann::ordered_json stats_json(const CandidateStats& s);
@@ -61,5 +69,8 @@ RunState read_checkpoint(const std::string& path);
 
 /// Writes `text` to path.tmp, then renames it over `path` (readers never see half a file).
 void write_file_atomic(const std::string& path, const std::string& text);
+
+/// The same with the text a writer produces.
+void write_file_atomic(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 }  // namespace swarmpath::evolve

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "evolve/optim/multi_objective.hpp"
 #include "evolve/params_export.hpp"
 #include "sim/config_error.hpp"
 #include "sim/hash.hpp"
@@ -189,6 +190,56 @@ void read_fitness(EvolveConfig& c, const TableReader& root) {
     t->fail("w_fail", "at least one weight must be > 0");
 }
 
+// [objectives]: required by a multi-objective optimiser, refused by the others; the [fitness]
+// weights mean nothing to a multi-objective run and are refused there (fail_path_ratio stays)
+void read_objectives(EvolveConfig& c, const TableReader& root, bool is_multi) {
+  const std::optional<TableReader> t = root.table("objectives");
+  if (!is_multi) {
+    if (t) {
+      t->fail("use", "[objectives] is for a multi-objective optimiser (name = \"nsga2\"); \"" +
+                         c.optimizer.name + "\" minimises the weighted sum of [fitness]");
+    }
+    return;
+  }
+  if (!t) {
+    root.fail("optimizer",
+              "\"" + c.optimizer.name +
+                  "\" needs an [objectives] table, e.g. use = [\"path\", \"ticks\", \"robots\"], "
+                  "min_success = 0.8, reference = [2.0, 40000, 1.0]");
+  }
+  if (const std::optional<TableReader> f = root.table("fitness")) {
+    for (const char* key : {"w_fail", "w_time", "w_path", "w_robots"}) {
+      if (f->has(key)) {
+        f->fail(key, "\"" + c.optimizer.name +
+                         "\" minimises the [objectives], not a weighted sum: remove the weights (only "
+                         "fail_path_ratio applies)");
+      }
+    }
+  }
+  MultiObjectiveSettings& m = c.multi;
+  for (const std::string& name : t->strings("use")) {
+    const std::optional<ObjectiveKind> k = parse_objective(name);
+    if (!k) t->fail("use", "unknown objective \"" + name + "\" (choices: path, ticks, robots)");
+    if (std::find(m.objectives.begin(), m.objectives.end(), *k) != m.objectives.end()) {
+      t->fail("use", "objective \"" + name + "\" named twice");
+    }
+    m.objectives.push_back(*k);
+  }
+  if (m.objectives.size() < 2) {
+    t->fail("use", "name 2 or 3 of path, ticks, robots (one objective: use a single-objective optimiser)");
+  }
+  m.min_success = number_in(*t, "min_success", 0.0, 0.0, 1.0);
+  m.reference = t->numbers("reference");
+  if (m.reference.size() != m.objectives.size()) {
+    t->fail("reference", "needs one value per objective of use (" + std::to_string(m.objectives.size()) +
+                             "), got " + std::to_string(m.reference.size()));
+  }
+  for (const double r : m.reference) {
+    if (!std::isfinite(r) || r <= 0.0) t->fail("reference", "values must be finite and > 0, got " + fmt(r));
+  }
+  t->finish();
+}
+
 void read_optimizer(EvolveConfig& c, const TableReader& root) {
   OptimizerSettings& o = c.optimizer;
   const std::optional<TableReader> t = root.table("optimizer");
@@ -206,7 +257,9 @@ void read_optimizer(EvolveConfig& c, const TableReader& root) {
     o.xtol_rel = number_in(*t, "xtol_rel", o.xtol_rel, 0.0, 1.0);
     t->finish();
   }
-  const std::vector<std::string> names = optimizer_names();
+  std::vector<std::string> names = optimizer_names();
+  const std::vector<std::string> multi = multi_objective_names();
+  names.insert(names.end(), multi.begin(), multi.end());
   const auto fail = [&](std::string_view key, const std::string& message) {
     if (t) t->fail(key, message);
     root.fail("optimizer", message);
@@ -216,9 +269,16 @@ void read_optimizer(EvolveConfig& c, const TableReader& root) {
     for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
     fail("name", "unknown optimiser \"" + o.name + "\" (choices: " + list + ")");
   }
+  const bool is_multi = std::find(multi.begin(), multi.end(), o.name) != multi.end();
+  read_objectives(c, root, is_multi);
   // the optimiser checks its own settings: build it once on this genome
   try {
-    (void)make_optimizer(o, c.genome.bounds(), encode(c.genome, c.genome.base), 0);
+    const Vector x0 = encode(c.genome, c.genome.base);
+    if (is_multi) {
+      (void)make_multi_objective(o, c.genome.bounds(), x0, c.multi.objectives.size(), 0);
+    } else {
+      (void)make_optimizer(o, c.genome.bounds(), x0, 0);
+    }
   } catch (const std::invalid_argument& e) {
     fail("name", e.what());
   }
@@ -242,6 +302,9 @@ void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string
   const std::optional<TableReader> t = root.table("reevaluate");
   if (!t) return;
   Reevaluation& r = c.reevaluate;
+  if (c.multi_objective() && t->has("top_k")) {
+    t->fail("top_k", "a multi-objective run re-evaluates every point of its final front: remove top_k");
+  }
   r.top_k = int_in(*t, "top_k", r.top_k, 1, 1000);
   r.seeds = int_in(*t, "seeds", r.seeds, 1, 100000);
   if (t->has("held_out")) {
@@ -393,6 +456,11 @@ nlohmann::ordered_json config_json(const EvolveConfig& c) {
                      {"seeds", c.reevaluate.seeds},
                      {"held_out", refs_json(c.reevaluate.held_out)},
                      {"held_out_hashes", ref_hashes_json(c.reevaluate.held_out)}};
+  if (c.multi_objective()) {
+    nlohmann::ordered_json use = nlohmann::ordered_json::array();
+    for (const ObjectiveKind k : c.multi.objectives) use.push_back(std::string(objective_name(k)));
+    j["objectives"] = {{"use", use}, {"min_success", c.multi.min_success}, {"reference", c.multi.reference}};
+  }
   j["base_params"] = params_values_json(c.genome.base);
   return j;
 }

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // An evolve config (configs/evolve/*.toml): the base params file, the tuned parameters and
 // their bounds, the evaluation set, the mode, the fitness weights, the optimiser, the budget,
-// the master seed and the final re-evaluation. Read strictly: unknown keys, wrong types and
-// impossible values are ConfigErrors naming file:line:key.
+// the master seed and the final re-evaluation; for a multi-objective optimiser (nsga2) the
+// objectives, the success-rate constraint and the hypervolume reference point instead of weights. Read
+// strictly: unknown keys, wrong types and impossible values are ConfigErrors naming file:line:key.
 #pragma once
 
 #include <cstdint>
@@ -16,6 +17,7 @@
 #include "evolve/fitness.hpp"
 #include "evolve/genome.hpp"
 #include "evolve/optim/optimizer.hpp"
+#include "evolve/pareto_objectives.hpp"
 #include "sim/controller.hpp"
 #include "sim/params.hpp"
 
@@ -64,6 +66,10 @@ struct EvolveConfig {
   OptimizerSettings optimizer;
   Budget budget;
   Reevaluation reevaluate;
+  MultiObjectiveSettings multi;  ///< [objectives]: set for multi-objective optimisers (nsga2) only
+
+  /// True when the optimiser is a multi-objective one (it minimises `multi`, not `fitness`).
+  bool multi_objective() const { return !multi.objectives.empty(); }
 };
 
 /// Loads and checks an evolve config (scenario and params files included). Relative paths in

@@ -15,6 +15,7 @@ RunScore score_run(const sim::Metrics& m, const CaseInfo& c, const FitnessWeight
   s.path_ratio = known ? m.path_length_tu / c.astar_tu : std::numeric_limits<double>::quiet_NaN();
   const int used = c.mode == sim::Mode::kTaskAllocation ? m.allocated : m.path_robots;
   s.robots_used = used >= 0 ? static_cast<double>(used) : static_cast<double>(c.robots);
+  s.robots_fraction = s.robots_used / static_cast<double>(c.robots);
   const double max_ticks = static_cast<double>(c.max_ticks);
   s.fitness = w.w_time * s.ticks / max_ticks + w.w_path * (known ? s.path_ratio : w.fail_path_ratio) +
               w.w_robots * s.robots_used / static_cast<double>(c.robots);
@@ -26,6 +27,7 @@ RunScore penalty_score(const CaseInfo& c, const FitnessWeights& w) {
   s.success = false;
   s.ticks = static_cast<double>(c.max_ticks);
   s.robots_used = static_cast<double>(c.robots);
+  s.robots_fraction = 1.0;
   s.fitness = w.w_fail + w.w_time + w.w_path * w.fail_path_ratio + w.w_robots;
   return s;
 }
@@ -33,12 +35,13 @@ RunScore penalty_score(const CaseInfo& c, const FitnessWeights& w) {
 CandidateStats summarise(std::span<const RunScore> runs) {
   CandidateStats st;
   if (runs.empty()) return st;
-  double f = 0.0, ok = 0.0, ticks = 0.0, path = 0.0, robots = 0.0;
+  double f = 0.0, ok = 0.0, ticks = 0.0, path = 0.0, robots = 0.0, fraction = 0.0;
   int paths = 0;
   for (const RunScore& r : runs) {
     f += r.fitness;
     ticks += r.ticks;
     robots += r.robots_used;
+    fraction += r.robots_fraction;
     if (r.success) ok += 1.0;
     if (r.success && std::isfinite(r.path_ratio)) {
       path += r.path_ratio;
@@ -51,6 +54,7 @@ CandidateStats summarise(std::span<const RunScore> runs) {
   st.mean_ticks = ticks / n;
   st.mean_path_ratio = paths > 0 ? path / paths : std::numeric_limits<double>::quiet_NaN();
   st.mean_robots = robots / n;
+  st.mean_robots_fraction = fraction / n;
   st.runs = static_cast<int>(runs.size());
   return st;
 }

@@ -36,7 +36,8 @@ struct RunScore {
   bool success = false;
   double ticks = 0.0;  ///< ticks_to_form, or max_ticks when the path never formed (censored)
   double path_ratio = std::numeric_limits<double>::quiet_NaN();  ///< path / A*; NaN on failure
-  double robots_used = 0.0;  ///< allocated (ta) or path_robots (pf); N on failure
+  double robots_used = 0.0;      ///< allocated (ta) or path_robots (pf); N on failure
+  double robots_fraction = 1.0;  ///< robots_used / N
 };
 
 /// fitness = w_fail (1 - success) + w_time t / max_ticks + w_path r + w_robots u / N, where on
@@ -56,6 +57,7 @@ struct CandidateStats {
   double mean_ticks = 0.0;                                            ///< mean censored ticks, over all runs
   double mean_path_ratio = std::numeric_limits<double>::quiet_NaN();  ///< over successful runs
   double mean_robots = 0.0;                                           ///< over all runs
+  double mean_robots_fraction = 1.0;  ///< mean of robots used / N, over all runs
   int runs = 0;
 };
 

@@ -200,4 +200,11 @@ std::vector<std::pair<std::string, std::string>> tuned_values(const Genome& g, c
   return out;
 }
 
+std::vector<double> tuned_numbers(const Genome& g, const sim::Params& p) {
+  std::vector<double> v;
+  v.reserve(g.genes.size());
+  for (const Gene& gene : g.genes) v.push_back(sim::get_value(p, *gene.info));
+  return v;
+}
+
 }  // namespace swarmpath::evolve

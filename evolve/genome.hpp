@@ -72,6 +72,9 @@ Vector encode(const Genome& g, const sim::Params& p);
 /// The tuned values of p as "name = value" pairs, in gene order (for reports).
 std::vector<std::pair<std::string, std::string>> tuned_values(const Genome& g, const sim::Params& p);
 
+/// The tuned values of p as numbers, in gene order (what makes two candidates distinct).
+std::vector<double> tuned_numbers(const Genome& g, const sim::Params& p);
+
 /// Rounds to 12 significant digits (the precision params files are written with).
 double canonical(double v);
 

@@ -40,6 +40,14 @@ void write_fitness_svg(std::ostream& out, const std::string& title,
 /// best.toml: write_params_toml of the best finalist under a comment saying where it came from.
 std::string best_toml(const EvolveConfig& c, const RunResult& r);
 
+/// The part of run.json every run has: tool, versions, config and its hash, every seed, threads,
+/// counts, wall time and stop reason.
+nlohmann::ordered_json run_json_common(const EvolveConfig& c, const RunState& st,
+                                       const std::vector<EvalSetting>& settings,
+                                       const std::vector<EvalCase>& cases,
+                                       const std::vector<EvalCase>& reevaluation_cases, double seconds,
+                                       const std::string& stop_reason, int threads);
+
 /// run.json: the config, the seeds, the build, the stop reason and the finalists.
 nlohmann::ordered_json run_json(const EvolveConfig& c, const RunResult& r, int threads);
 

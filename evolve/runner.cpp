@@ -22,13 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::vector<double> tuned_vector(const Genome& g, const sim::Params& p) {
-  std::vector<double> v;
-  v.reserve(g.genes.size());
-  for (const Gene& gene : g.genes) v.push_back(sim::get_value(p, *gene.info));
-  return v;
-}
-
 bool elite_before(const Elite& a, const Elite& b) {
   if (a.stats.fitness != b.stats.fitness) return a.stats.fitness < b.stats.fitness;
   if (a.generation != b.generation) return a.generation < b.generation;
@@ -41,7 +34,7 @@ void update_elites(std::vector<Elite>& elites, const Genome& genome, const std::
                    std::int64_t generation, std::size_t keep) {
   for (std::size_t i = 0; i < xs.size(); ++i) {
     if (!decoded[i].violation.empty()) continue;  // penalised: never a finalist
-    Elite e{xs[i], tuned_vector(genome, decoded[i].params), stats[i], generation, static_cast<int>(i)};
+    Elite e{xs[i], tuned_numbers(genome, decoded[i].params), stats[i], generation, static_cast<int>(i)};
     const auto same =
         std::find_if(elites.begin(), elites.end(), [&](const Elite& o) { return o.values == e.values; });
     if (same == elites.end()) {
@@ -54,21 +47,106 @@ void update_elites(std::vector<Elite>& elites, const Genome& genome, const std::
   if (elites.size() > keep) elites.resize(keep);
 }
 
-std::string text_of(const auto& write) {
-  std::ostringstream o;
-  write(o);
-  return o.str();
-}
-
 void write_progress_files(const EvolveConfig& c, const RunState& st, const std::string& dir) {
   write_file_atomic((fs::path(dir) / "checkpoint.json").string(), checkpoint_json(st).dump(1) + "\n");
   write_file_atomic((fs::path(dir) / "log.csv").string(),
-                    text_of([&](std::ostream& o) { write_log_csv(o, st.history); }));
+                    [&](std::ostream& o) { write_log_csv(o, st.history); });
   write_file_atomic((fs::path(dir) / "fitness.svg").string(),
-                    text_of([&](std::ostream& o) { write_fitness_svg(o, c.name, st.history); }));
+                    [&](std::ostream& o) { write_fitness_svg(o, c.name, st.history); });
 }
 
 }  // namespace
+
+RunState resumed_state(const EvolveConfig& c, const std::string& checkpoint) {
+  RunState st = read_checkpoint(checkpoint);
+  const std::string hash = config_hash(c);
+  if (st.config_hash != hash) {
+    throw sim::ConfigError(c.file, 0, "",
+                           checkpoint + " was written by a different config (hash " + st.config_hash +
+                               ", this config hashes to " + hash +
+                               "): resume with the config that started the run (only its [budget] may "
+                               "change), or start a new run in another --out folder");
+  }
+  return st;
+}
+
+RunState starting_state(const EvolveConfig& c, const RunOptions& o,
+                        const std::function<void(const nlohmann::json&)>& restore) {
+  const bool files = !o.out_dir.empty();
+  RunState st;
+  st.config_hash = config_hash(c);
+  if (o.resume) {
+    if (!files) throw std::invalid_argument("resuming needs the output folder of the run");
+    const std::string checkpoint = (fs::path(o.out_dir) / "checkpoint.json").string();
+    st = resumed_state(c, checkpoint);
+    restore(st.optimizer);
+    if (o.note) {
+      o.note("resuming " + checkpoint + " after generation " + std::to_string(st.generation) + " (" +
+             std::to_string(st.evaluations) + " evaluations)");
+    }
+  }
+  if (files) fs::create_directories(o.out_dir);
+  return st;
+}
+
+std::vector<EvalCase> first_cases(const EvolveConfig& c, const std::vector<EvalSetting>& settings) {
+  std::vector<EvalCase> cases =
+      generation_cases(settings, c.evaluation.seeds, c.seed, 0, c.evaluation.fixed_seeds);
+  if (cases.empty()) throw std::invalid_argument("the evaluation set is empty");
+  return cases;
+}
+
+std::vector<Decoded> decode_all(const Genome& g, const std::vector<Vector>& xs) {
+  std::vector<Decoded> out;
+  out.reserve(xs.size());
+  for (const Vector& x : xs) out.push_back(decode(g, x));
+  return out;
+}
+
+bool finish_generation(RunState& st, GenerationRecord rec, std::size_t candidates, double seconds,
+                       nlohmann::json optimizer_state, const RunOptions& o,
+                       const std::function<void(const RunState&)>& write) {
+  st.generation = rec.generation + 1;
+  st.evaluations += static_cast<std::int64_t>(candidates);
+  st.seconds = seconds;
+  rec.evaluations = st.evaluations;
+  rec.seconds = st.seconds;
+  st.history.push_back(rec);
+  st.optimizer = std::move(optimizer_state);
+  if (write) write(st);
+  bool stop = false;
+  for (const GenerationCallback& cb : o.callbacks) stop = cb(rec, st) || stop;
+  return stop;
+}
+
+std::string budget_stop(const Budget& b, const RunState& st, double seconds, bool optimizer_done) {
+  if (b.generations > 0 && st.generation >= b.generations) return "generations";
+  if (b.evaluations > 0 && st.evaluations >= b.evaluations) return "evaluations";
+  if (b.wall_seconds > 0.0 && seconds >= b.wall_seconds) return "wall time";
+  if (optimizer_done) return "optimizer done";
+  return {};
+}
+
+std::vector<CandidateStats> candidate_stats(const std::vector<RunScore>& scores, std::size_t candidates) {
+  std::vector<CandidateStats> stats(candidates);
+  if (candidates == 0) return stats;
+  const std::size_t nc = scores.size() / candidates;
+  for (std::size_t i = 0; i < candidates; ++i) {
+    stats[i] = summarise(std::span<const RunScore>(scores.data() + i * nc, nc));
+  }
+  return stats;
+}
+
+std::pair<std::vector<RunScore>, std::vector<RunScore>> split_held_out(
+    const std::vector<RunScore>& scores, std::size_t i, const std::vector<EvalSetting>& settings,
+    const std::vector<EvalCase>& cases) {
+  std::pair<std::vector<RunScore>, std::vector<RunScore>> out;
+  const std::size_t nr = cases.size();
+  for (std::size_t k = 0; k < nr; ++k) {
+    (settings[cases[k].setting].held_out ? out.second : out.first).push_back(scores[i * nr + k]);
+  }
+  return out;
+}
 
 Budget effective_budget(const EvolveConfig& c, const std::optional<int>& generations) {
   if (generations) return Budget{*generations, 0, 0.0};
@@ -111,46 +189,22 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
     if (o.note) o.note(s);
   };
   const bool files = !o.out_dir.empty();
-  const std::string checkpoint = files ? (fs::path(o.out_dir) / "checkpoint.json").string() : std::string();
-  const std::string hash = config_hash(c);
 
   // the optimiser, fresh or restored (its seed comes from the master seed only)
   std::unique_ptr<Optimizer> opt =
       factory(c.optimizer, c.genome.bounds(), encode(c.genome, c.genome.base), optimizer_seed(c.seed));
-  RunState st;
-  st.config_hash = hash;
-  if (o.resume) {
-    if (!files) throw std::invalid_argument("resuming needs the output folder of the run");
-    st = read_checkpoint(checkpoint);
-    if (st.config_hash != hash) {
-      throw sim::ConfigError(c.file, 0, "",
-                             checkpoint + " was written by a different config (hash " + st.config_hash +
-                                 ", this config hashes to " + hash +
-                                 "): resume with the config that started the run (only its [budget] may "
-                                 "change), or start a new run in another --out folder");
-    }
-    opt->restore(st.optimizer);
-    note("resuming " + checkpoint + " after generation " + std::to_string(st.generation) + " (" +
-         std::to_string(st.evaluations) + " evaluations)");
-  }
-  if (files) fs::create_directories(o.out_dir);
+  RunState st = starting_state(c, o, [&](const nlohmann::json& j) { opt->restore(j); });
 
   RunResult result;
   result.settings = f.settings();
   const bool fixed = c.evaluation.fixed_seeds;
-  result.cases = generation_cases(result.settings, c.evaluation.seeds, c.seed, 0, fixed);
-  if (result.cases.empty()) throw std::invalid_argument("the evaluation set is empty");
+  result.cases = first_cases(c, result.settings);
 
   const Stopwatch clock;
   const double recorded_start = st.seconds;
   const auto recorded = [&] { return o.wall_time ? recorded_start + clock.seconds() : 0.0; };
-  const auto stop_reason = [&]() -> std::string {
-    if (budget.generations > 0 && st.generation >= budget.generations) return "generations";
-    if (budget.evaluations > 0 && st.evaluations >= budget.evaluations) return "evaluations";
-    if (budget.wall_seconds > 0.0 && recorded_start + clock.seconds() >= budget.wall_seconds)
-      return "wall time";
-    if (opt->done()) return "optimizer done";
-    return {};
+  const auto stop_reason = [&] {
+    return budget_stop(budget, st, recorded_start + clock.seconds(), opt->done());
   };
 
   const auto keep = static_cast<std::size_t>(c.reevaluate.top_k);
@@ -160,21 +214,16 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
     // ask, decode (repairing cross constraints), score every (candidate, case) on shared seeds
     const std::vector<Vector> xs = opt->ask();
     if (xs.empty()) throw std::runtime_error(opt->name() + " proposed no candidates");
-    std::vector<Decoded> decoded;
-    decoded.reserve(xs.size());
-    for (const Vector& x : xs) decoded.push_back(decode(c.genome, x));
+    const std::vector<Decoded> decoded = decode_all(c.genome, xs);
     const std::vector<EvalCase> cases =
         generation_cases(result.settings, c.evaluation.seeds, c.seed, gen, fixed);
     const std::vector<RunScore> scores = evaluate_batch(f, decoded, cases, o.threads, o.progress);
 
     // candidate means (in case order), then tell
     const std::size_t nc = cases.size();
-    std::vector<CandidateStats> stats(xs.size());
+    const std::vector<CandidateStats> stats = candidate_stats(scores, xs.size());
     std::vector<double> fitness(xs.size());
-    for (std::size_t i = 0; i < xs.size(); ++i) {
-      stats[i] = summarise(std::span<const RunScore>(scores.data() + i * nc, nc));
-      fitness[i] = stats[i].fitness;
-    }
+    for (std::size_t i = 0; i < xs.size(); ++i) fitness[i] = stats[i].fitness;
     opt->tell(xs, fitness);
 
     // the generation's record, the best-so-far list, the checkpoint
@@ -192,21 +241,12 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
     rec.std = std::sqrt(sq / static_cast<double>(fitness.size()));
     rec.best_so_far = st.history.empty() ? rec.best : std::min(st.history.back().best_so_far, rec.best);
     update_elites(st.elites, c.genome, xs, decoded, stats, gen, keep);
-    st.generation = gen + 1;
-    st.evaluations += static_cast<std::int64_t>(xs.size());
     for (const Decoded& d : decoded) {
       if (d.violation.empty()) st.runs += static_cast<std::int64_t>(nc);
     }
-    st.seconds = recorded();
-    rec.evaluations = st.evaluations;
-    rec.seconds = st.seconds;
-    st.history.push_back(rec);
-    st.optimizer = opt->state();
-    if (files) write_progress_files(c, st, o.out_dir);
-
-    bool stop = false;
-    for (const GenerationCallback& cb : o.callbacks) stop = cb(rec, st) || stop;
-    if (stop) {
+    std::function<void(const RunState&)> write;
+    if (files) write = [&](const RunState& now) { write_progress_files(c, now, o.out_dir); };
+    if (finish_generation(st, rec, xs.size(), recorded(), opt->state(), o, write)) {
       reason = "callback";
       break;
     }
@@ -226,13 +266,8 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
        std::to_string(result.reevaluation_cases.size()) + " fresh cases each");
   const std::vector<RunScore> scores =
       evaluate_batch(f, finalists, result.reevaluation_cases, o.threads, o.progress);
-  const std::size_t nr = result.reevaluation_cases.size();
   for (std::size_t i = 0; i < finalists.size(); ++i) {
-    std::vector<RunScore> train, held;
-    for (std::size_t k = 0; k < nr; ++k) {
-      const bool held_out = result.settings[result.reevaluation_cases[k].setting].held_out;
-      (held_out ? held : train).push_back(scores[i * nr + k]);
-    }
+    const auto [train, held] = split_held_out(scores, i, result.settings, result.reevaluation_cases);
     const bool base = i + 1 == finalists.size();
     Finalist fin{base ? Elite{} : st.elites[i], finalists[i].params, summarise(train), summarise(held)};
     if (base) {

@@ -10,6 +10,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "evolve/checkpoint.hpp"
@@ -65,6 +66,43 @@ struct RunResult {
 
 /// The budget in force: the config's, or `generations` generations when given.
 Budget effective_budget(const EvolveConfig& c, const std::optional<int>& generations);
+
+/// The state to continue from: read from `checkpoint` and checked against the config's hash
+/// (a ConfigError names both hashes when another config wrote it).
+RunState resumed_state(const EvolveConfig& c, const std::string& checkpoint);
+
+/// The state a run starts from: fresh (with the config's hash), or with options.resume the
+/// checkpoint in options.out_dir (checked by resumed_state, its optimiser state handed to
+/// `restore`, announced through options.note). Creates options.out_dir when one is given.
+RunState starting_state(const EvolveConfig& c, const RunOptions& options,
+                        const std::function<void(const nlohmann::json&)>& restore);
+
+/// The training cases of generation 0 (later generations differ in seed only); throws
+/// std::invalid_argument when there are none.
+std::vector<EvalCase> first_cases(const EvolveConfig& c, const std::vector<EvalSetting>& settings);
+
+/// Every candidate decoded (repaired), in order.
+std::vector<Decoded> decode_all(const Genome& g, const std::vector<Vector>& xs);
+
+/// Ends generation rec.generation: counts it and its candidates into st, stamps rec with the
+/// evaluation count and `seconds`, appends it, stores the optimiser's state, calls `write` (the
+/// progress files; skipped when empty), then every callback. True when a callback asks to stop.
+bool finish_generation(RunState& st, GenerationRecord rec, std::size_t candidates, double seconds,
+                       nlohmann::json optimizer_state, const RunOptions& options,
+                       const std::function<void(const RunState&)>& write);
+
+/// Why a run stops before its next generation ("" to go on): "generations", "evaluations",
+/// "wall time" (`seconds` is the wall time across resumes) or "optimizer done".
+std::string budget_stop(const Budget& b, const RunState& st, double seconds, bool optimizer_done);
+
+/// Each candidate's summary over its cases (scores as evaluate_batch returns them).
+std::vector<CandidateStats> candidate_stats(const std::vector<RunScore>& scores, std::size_t candidates);
+
+/// Candidate i's runs of a batch on `cases` (scores as evaluate_batch returns them), split into
+/// those of training settings (first) and of held-out ones (second), each in case order.
+std::pair<std::vector<RunScore>, std::vector<RunScore>> split_held_out(
+    const std::vector<RunScore>& scores, std::size_t i, const std::vector<EvalSetting>& settings,
+    const std::vector<EvalCase>& cases);
 
 /// scores[i * cases.size() + j] is candidate i on case j (penalty() for candidates with a
 /// violation). Parallel over all (candidate, case) pairs; exceptions are rethrown afterwards.

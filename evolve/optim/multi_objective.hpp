@@ -49,6 +49,10 @@ class MultiObjectiveOptimizer {
   /// while nothing told is feasible).
   virtual std::vector<ParetoPoint> front() const = 0;
 
+  /// The current population (what survived the last tell), feasible or not, in its order;
+  /// front() is a subset of it.
+  virtual std::vector<ParetoPoint> population() const = 0;
+
   /// The whole state (random generator included); restore() of it continues bit-identically.
   virtual nlohmann::json state() const = 0;
   virtual void restore(const nlohmann::json& state) = 0;

@@ -240,6 +240,13 @@ std::vector<ParetoPoint> Nsga2::front() const {
   return points;
 }
 
+std::vector<ParetoPoint> Nsga2::population() const {
+  std::vector<ParetoPoint> points;
+  points.reserve(population_.size());
+  for (std::size_t i = 0; i < population_.size(); ++i) points.push_back({population_x_[i], objectives_[i]});
+  return points;
+}
+
 nlohmann::json Nsga2::state() const {
   auto j = state_header(name(), box_.dim());
   j["n_objectives"] = n_objectives_;

@@ -51,6 +51,7 @@ class Nsga2 final : public MultiObjectiveOptimizer {
   void tell(const std::vector<Vector>& candidates, const std::vector<Vector>& objectives,
             const std::vector<double>& constraint_violation) override;
   std::vector<ParetoPoint> front() const override;
+  std::vector<ParetoPoint> population() const override;
 
   nlohmann::json state() const override;
   void restore(const nlohmann::json& state) override;

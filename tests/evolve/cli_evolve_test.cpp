@@ -93,6 +93,39 @@ TEST(CliEvolve, EvolveWritesItsFilesAndResumes) {
   EXPECT_EQ(j.at("generations").get<int>(), 2);
 }
 
+TEST(CliEvolve, Nsga2WritesTheFrontAndExportTakesAnyPoint) {
+  const auto dir = scratch("pareto");
+  write_text(dir / "tiny.toml", evolve::testing::tiny_pareto_config(2));
+  const std::filesystem::path out = dir / "out";
+  Result r = cli({"evolve", "--config", (dir / "tiny.toml").string(), "--out", out.string(), "--threads", "2",
+                  "--no-wall-time"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("generation 1/2: hypervolume "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("re-evaluating the "), std::string::npos) << r.err;
+  EXPECT_NE(r.out.find("| point | found | success | path / A* | ticks to form | robots used / N | note |"),
+            std::string::npos)
+      << r.out;
+  EXPECT_NE(r.out.find("| base params |"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("front points dominate the base params"), std::string::npos) << r.out;
+  for (const char* f : {"log.csv", "hypervolume.svg", "pareto.csv", "pareto.svg", "run.json",
+                        "checkpoint.json", "front/000.toml"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / f)) << f;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out / "best.toml"));  // a front has no single best
+  // every front point exports, e.g. as ARGoS controller attributes
+  const nlohmann::json j = nlohmann::json::parse(read_text(out / "run.json"));
+  ASSERT_FALSE(j.at("front").empty());
+  for (const nlohmann::json& p : j.at("front")) {
+    const std::string file = (out / p.at("params_file").get<std::string>()).string();
+    r = cli({"export", "--params", file, "--format", "argos"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(
+        r.out.find(" w_away=\"" + sim::format_value(sim::load_params(file), *sim::find_param("w_away"))),
+        std::string::npos)
+        << r.out;
+  }
+}
+
 TEST(CliEvolve, EvaluateAgainstRunsBothOnTheSameSeeds) {
   const auto dir = scratch("eval");
   const std::string json = (dir / "eval.json").string();

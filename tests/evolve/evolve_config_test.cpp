@@ -16,35 +16,8 @@ namespace {
 using testing::source;
 using testing::tiny_config;
 
-// the 1-based line of the first occurrence of `needle` in `text`
-int line_of(const std::string& text, const std::string& needle) {
-  const auto pos = text.find(needle);
-  EXPECT_NE(pos, std::string::npos) << needle;
-  return 1 +
-         static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(pos), '\n'));
-}
-
-std::string replaced(std::string text, const std::string& from, const std::string& to) {
-  const auto pos = text.find(from);
-  EXPECT_NE(pos, std::string::npos) << from;
-  return text.replace(pos, from.size(), to);
-}
-
-// parses `text` and expects a ConfigError at the line of `marker` with `key`
-void expect_error(const std::string& text, const std::string& marker, const std::string& key,
-                  const std::string& words) {
-  try {
-    (void)parse_evolve_config(text, "bad.toml", "");
-    ADD_FAILURE() << "no error for " << key;
-  } catch (const sim::ConfigError& e) {
-    EXPECT_EQ(e.file(), "bad.toml");
-    EXPECT_EQ(e.line(), line_of(text, marker)) << e.what();
-    EXPECT_EQ(e.key(), key) << e.what();
-    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
-    EXPECT_EQ(std::string(e.what()).rfind("bad.toml:" + std::to_string(e.line()) + ": " + key + ": ", 0), 0u)
-        << e.what();
-  }
-}
+using testing::expect_error;
+using testing::replaced;
 
 TEST(EvolveConfig, TheShippedConfigsLoad) {
   const EvolveConfig d = load_evolve_config(source("configs/evolve/default.toml"));

@@ -3,11 +3,13 @@
 // small arena, 8 robots, short runs) and fakes for the objective and the optimiser.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -18,6 +20,8 @@
 #include "evolve/evolve_config.hpp"
 #include "evolve/objective.hpp"
 #include "evolve/optim/optimizer.hpp"
+#include "evolve/runner.hpp"
+#include "sim/config_error.hpp"
 
 namespace swarmpath::evolve::testing {
 
@@ -43,6 +47,25 @@ inline std::string read_text(const std::filesystem::path& p) {
 
 inline void write_text(const std::filesystem::path& p, const std::string& text) {
   std::ofstream(p, std::ios::binary) << text;
+}
+
+/// Options for a test run into `dir`: no wall time (files compare bit for bit), no callbacks.
+inline RunOptions test_options(const std::filesystem::path& dir, int threads,
+                               std::optional<int> generations = {}, bool resume = false) {
+  RunOptions o;
+  o.out_dir = dir.string();
+  o.threads = threads;
+  o.generations = generations;
+  o.resume = resume;
+  o.wall_time = false;
+  return o;
+}
+
+/// run.json without what may differ between equal runs (the thread count).
+inline std::string run_json_text(const std::filesystem::path& dir) {
+  nlohmann::json j = nlohmann::json::parse(read_text(dir / "run.json"));
+  j.erase("threads");
+  return j.dump(1);
 }
 
 /// A tiny config: short_chain at 8 robots, 3000 ticks, 2 seeds; three tuned parameters.
@@ -80,8 +103,50 @@ inline std::string tiny_config(const std::string& optimizer = "random", int gene
          "seeds = 2\n";
 }
 
+/// The tiny config with NSGA-II over path, ticks and robots (success >= 0.5), population 8.
+inline std::string tiny_pareto_config(int generations = 2, const std::string& objectives =
+                                                               "use = [\"path\", \"ticks\", \"robots\"]\n"
+                                                               "min_success = 0.5\n"
+                                                               "reference = [2.0, 3000, 1.0]\n") {
+  std::string text = tiny_config("nsga2", generations);
+  const std::string population = "population = 4\n", top_k = "top_k = 2\n";
+  text.replace(text.find(population), population.size(), "population = 8\n");
+  text.erase(text.find(top_k), top_k.size());
+  return text + "\n[objectives]\n" + objectives;
+}
+
 inline EvolveConfig tiny(const std::string& optimizer = "random", int generations = 2) {
   return parse_evolve_config(tiny_config(optimizer, generations), "tiny.toml", "");
+}
+
+// the 1-based line of the first occurrence of `needle` in `text`
+inline int line_of(const std::string& text, const std::string& needle) {
+  const auto pos = text.find(needle);
+  EXPECT_NE(pos, std::string::npos) << needle;
+  return 1 +
+         static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(pos), '\n'));
+}
+
+inline std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  const auto pos = text.find(from);
+  EXPECT_NE(pos, std::string::npos) << from;
+  return text.replace(pos, from.size(), to);
+}
+
+// parses `text` and expects a ConfigError at the line of `marker` with `key`
+inline void expect_error(const std::string& text, const std::string& marker, const std::string& key,
+                         const std::string& words) {
+  try {
+    (void)parse_evolve_config(text, "bad.toml", "");
+    ADD_FAILURE() << "no error for " << key;
+  } catch (const sim::ConfigError& e) {
+    EXPECT_EQ(e.file(), "bad.toml");
+    EXPECT_EQ(e.line(), line_of(text, marker)) << e.what();
+    EXPECT_EQ(e.key(), key) << e.what();
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).rfind("bad.toml:" + std::to_string(e.line()) + ": " + key + ": ", 0), 0u)
+        << e.what();
+  }
 }
 
 /// An objective whose score is a function of (params, case), recording every call.

@@ -19,26 +19,14 @@ namespace {
 using testing::FakeObjective;
 using testing::FixedOptimizer;
 using testing::read_text;
+using testing::run_json_text;
 using testing::scratch;
 
 namespace fs = std::filesystem;
 
 RunResult run(const EvolveConfig& c, const CaseObjective& f, const fs::path& dir, int threads,
               std::optional<int> generations = {}, bool resume = false) {
-  RunOptions o;
-  o.out_dir = dir.string();
-  o.threads = threads;
-  o.generations = generations;
-  o.resume = resume;
-  o.wall_time = false;
-  return run_evolution(c, f, o);
-}
-
-// run.json without what may differ between equal runs (the thread count)
-std::string run_json_text(const fs::path& dir) {
-  nlohmann::json j = nlohmann::json::parse(read_text(dir / "run.json"));
-  j.erase("threads");
-  return j.dump(1);
+  return run_evolution(c, f, testing::test_options(dir, threads, generations, resume));
 }
 
 void expect_same_files(const fs::path& a, const fs::path& b) {

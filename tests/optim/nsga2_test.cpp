@@ -194,6 +194,15 @@ TEST(Nsga2, ConstraintsKeepTheFrontFeasible) {
     lowest_f1 = std::min(lowest_f1, p.objectives[0]);
   }
   EXPECT_LT(lowest_f1, 0.31);  // the front reaches the constraint's edge
+  // the population is what survived: its size, the front inside it, its objectives as told
+  const auto population = opt->population();
+  ASSERT_EQ(population.size(), 40u);
+  for (const auto& p : front) {
+    EXPECT_TRUE(std::any_of(population.begin(), population.end(), [&](const ParetoPoint& q) {
+      return q.x == p.x && q.objectives == p.objectives;
+    }));
+  }
+  for (const auto& q : population) EXPECT_EQ(q.objectives, zdt1(q.x));
 }
 
 TEST(Nsga2, PopulationSettingAndBatchSizes) {
