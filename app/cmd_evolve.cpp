@@ -75,12 +75,6 @@ void print_stats_row(std::ostream& out, const std::string& label, const std::str
       << num(fresh.mean_path_ratio) << " | " << fixed(fresh.mean_robots, 1) << " |\n";
 }
 
-std::string interval_text(const evolve::Interval& i, evolve::ObjectiveKind k) {
-  const int digits = k == evolve::ObjectiveKind::kTicks ? 0 : 3;
-  if (!std::isfinite(i.half_width)) return fixed(i.mean, digits);
-  return fixed(i.mean, digits) + " +- " + fixed(i.half_width, digits);
-}
-
 // the front on fresh seeds, the base params under it
 void print_pareto_summary(std::ostream& out, const evolve::EvolveConfig& c, const evolve::ParetoResult& r,
                           const std::string& dir) {
@@ -98,7 +92,7 @@ void print_pareto_summary(std::ostream& out, const evolve::EvolveConfig& c, cons
                        const std::string& note) {
     out << "| " << label << " | " << found << " | " << fixed(100.0 * p.reevaluated.success_rate, 0) << " % |";
     for (std::size_t k = 0; k < c.multi.objectives.size(); ++k) {
-      out << ' ' << interval_text(p.intervals[k], c.multi.objectives[k]) << " |";
+      out << ' ' << evolve::interval_text(c.multi.objectives[k], p.intervals[k]) << " |";
     }
     out << ' ' << note << " |\n";
   };
@@ -117,8 +111,17 @@ void print_pareto_summary(std::ostream& out, const evolve::EvolveConfig& c, cons
   }
   row("base params", c.params_written.empty() ? "paper defaults" : c.params_written, r.base, "");
   out << "\n"
-      << dominating << " of " << r.front.size()
-      << " front points dominate the base params on the fresh seeds\n";
+      << dominating << " of " << r.front.size() << " front points dominate the base params on the fresh seeds"
+      << (dominating > 0 ? "; their differences, paired on the same runs (mean +- 95 % CI):\n" : "\n");
+  for (std::size_t i = 0; i < r.front.size(); ++i) {
+    if (!r.front[i].dominates_base) continue;
+    out << "  point " << i << " - base:";
+    for (std::size_t k = 0; k < c.multi.objectives.size(); ++k) {
+      out << (k ? ", " : " ") << evolve::objective_name(c.multi.objectives[k]) << ' '
+          << evolve::interval_text(c.multi.objectives[k], r.front[i].versus_base[k]);
+    }
+    out << '\n';
+  }
   out << "wrote " << dir << "/{pareto.csv, pareto.svg, front/000.toml.."
       << (r.front.empty() ? "" : evolve::front_file_name(r.front.size() - 1))
       << ", log.csv, hypervolume.svg, run.json, checkpoint.json}\n";

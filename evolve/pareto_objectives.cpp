@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace swarmpath::evolve {
 
@@ -94,27 +96,53 @@ Interval interval_of(const std::vector<double>& x) {
 
 }  // namespace
 
+namespace {
+
+// the value of one objective in one run; nullopt where it is not defined (the path of a failure)
+std::optional<double> run_value(const RunScore& r, ObjectiveKind k) {
+  switch (k) {
+    case ObjectiveKind::kPathRatio:
+      if (r.success && std::isfinite(r.path_ratio)) return r.path_ratio;
+      return std::nullopt;
+    case ObjectiveKind::kTicks:
+      return r.ticks;
+    case ObjectiveKind::kRobotsFraction:
+      return r.robots_fraction;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::vector<Interval> objective_intervals(std::span<const RunScore> runs,
                                           const std::vector<ObjectiveKind>& kinds, double fail_path_ratio) {
   std::vector<Interval> out;
   for (const ObjectiveKind k : kinds) {
     std::vector<double> x;
     for (const RunScore& r : runs) {
-      switch (k) {
-        case ObjectiveKind::kPathRatio:
-          if (r.success && std::isfinite(r.path_ratio)) x.push_back(r.path_ratio);
-          break;
-        case ObjectiveKind::kTicks:
-          x.push_back(r.ticks);
-          break;
-        case ObjectiveKind::kRobotsFraction:
-          x.push_back(r.robots_fraction);
-          break;
-      }
+      if (const std::optional<double> v = run_value(r, k)) x.push_back(*v);
     }
     Interval i = interval_of(x);
     if (k == ObjectiveKind::kPathRatio && x.empty()) i.mean = fail_path_ratio;  // as objective_values
     out.push_back(i);
+  }
+  return out;
+}
+
+std::vector<Interval> paired_differences(std::span<const RunScore> a, std::span<const RunScore> b,
+                                         const std::vector<ObjectiveKind>& kinds) {
+  if (a.size() != b.size()) {
+    throw std::invalid_argument("paired_differences: " + std::to_string(a.size()) + " runs against " +
+                                std::to_string(b.size()));
+  }
+  std::vector<Interval> out;
+  for (const ObjectiveKind k : kinds) {
+    std::vector<double> d;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      const std::optional<double> va = run_value(a[i], k), vb = run_value(b[i], k);
+      if (va && vb) d.push_back(*va - *vb);
+    }
+    out.push_back(interval_of(d));
   }
   return out;
 }

@@ -60,6 +60,12 @@ struct Interval {
 std::vector<Interval> objective_intervals(std::span<const RunScore> runs,
                                           const std::vector<ObjectiveKind>& kinds, double fail_path_ratio);
 
+/// Each objective's paired difference a - b over runs on the same cases (a[i] and b[i] share a
+/// seed), with its 95 % interval: ticks and robots over every pair, the path over the pairs where
+/// both runs succeeded. Negative means a is better. Throws std::invalid_argument when the sizes differ.
+std::vector<Interval> paired_differences(std::span<const RunScore> a, std::span<const RunScore> b,
+                                         const std::vector<ObjectiveKind>& kinds);
+
 /// The 0.975 quantile of Student's t distribution with `df` >= 1 degrees of freedom (exact
 /// table to 30, then the Cornish-Fisher expansion; within 1e-4).
 double t_quantile_975(int df);

@@ -54,6 +54,15 @@ nlohmann::ordered_json point_json(const EvolveConfig& c, const FrontPoint& p, bo
   if (!base) {
     j["dominated_after_reevaluation"] = p.dominated_after_reevaluation;
     j["dominates_base"] = p.dominates_base;
+    nlohmann::ordered_json versus;
+    for (std::size_t k = 0; k < c.multi.objectives.size(); ++k) {
+      const Interval& d = p.versus_base[k];
+      versus[std::string(objective_name(c.multi.objectives[k]))] = {{"mean", number_or_null(d.mean)},
+                                                                    {"ci95_low", number_or_null(d.lower())},
+                                                                    {"ci95_high", number_or_null(d.upper())},
+                                                                    {"n", d.n}};
+    }
+    j["minus_base_paired"] = versus;
   }
   nlohmann::ordered_json tuned;
   for (const Gene& g : c.genome.genes) tuned[std::string(g.info->name)] = param_value_json(p.params, *g.info);
@@ -74,6 +83,17 @@ std::string objective_title(ObjectiveKind k) {
       return "robots used / N";
   }
   return "?";
+}
+
+std::string objective_text(ObjectiveKind k, double v) {
+  std::ostringstream o;
+  o << std::fixed << std::setprecision(k == ObjectiveKind::kTicks ? 0 : 3) << v;
+  return o.str();
+}
+
+std::string interval_text(ObjectiveKind k, const Interval& i) {
+  if (!std::isfinite(i.half_width)) return objective_text(k, i.mean);
+  return objective_text(k, i.mean) + " +- " + objective_text(k, i.half_width);
 }
 
 void write_pareto_log_csv(std::ostream& out, const std::vector<GenerationRecord>& history,
@@ -115,7 +135,13 @@ void write_pareto_csv(std::ostream& out, const EvolveConfig& c, const ParetoResu
     const std::string_view n = objective_name(k);
     out << ',' << n << "_mean," << n << "_ci95_low," << n << "_ci95_high," << n << "_n";
   }
-  out << ",success_rate,runs,feasible,dominated_after_reevaluation,dominates_base,params_file\n";
+  out << ",success_rate,runs,feasible,dominated_after_reevaluation,dominates_base";
+  for (const ObjectiveKind k : kinds) {
+    const std::string_view n = objective_name(k);
+    out << ',' << n << "_vs_base_mean," << n << "_vs_base_ci95_low," << n << "_vs_base_ci95_high," << n
+        << "_vs_base_n";
+  }
+  out << ",params_file\n";
   const auto row = [&](const FrontPoint& p, const std::string& label, bool base) {
     out << label << ',' << (base ? "" : std::to_string(p.elite.generation)) << ','
         << (base ? "" : std::to_string(p.elite.candidate));
@@ -126,16 +152,19 @@ void write_pareto_csv(std::ostream& out, const EvolveConfig& c, const ParetoResu
       out << ',' << csv_number(i.mean) << ',' << csv_number(i.lower()) << ',' << csv_number(i.upper()) << ','
           << i.n;
     }
+    const auto flag = [&](bool v) { return base ? "" : v ? "1" : "0"; };
     out << ',' << exact(p.reevaluated.success_rate) << ',' << p.reevaluated.runs << ','
-        << (p.reevaluated_violation <= 0.0 ? 1 : 0) << ','
-        << (base                             ? ""
-            : p.dominated_after_reevaluation ? "1"
-                                             : "0")
-        << ','
-        << (base               ? ""
-            : p.dominates_base ? "1"
-                               : "0")
-        << ',';
+        << (p.reevaluated_violation <= 0.0 ? 1 : 0) << ',' << flag(p.dominated_after_reevaluation) << ','
+        << flag(p.dominates_base) << ',';
+    for (std::size_t k = 0; k < kinds.size(); ++k) {
+      if (base) {
+        out << ",,,,";
+        continue;
+      }
+      const Interval& d = p.versus_base[k];
+      out << csv_number(d.mean) << ',' << csv_number(d.lower()) << ',' << csv_number(d.upper()) << ',' << d.n
+          << ',';
+    }
     out << (base ? (c.params_written.empty() ? "" : c.params_written) : "front/" + label + ".toml") << '\n';
   };
   for (std::size_t i = 0; i < r.front.size(); ++i) {
@@ -156,9 +185,13 @@ std::string front_point_toml(const EvolveConfig& c, const ParetoResult& r, std::
   h << "# Found in generation " << p.elite.generation << " (candidate " << p.elite.candidate << "). On "
     << p.reevaluated.runs << " fresh runs: success rate " << short_text(p.reevaluated.success_rate);
   for (std::size_t k = 0; k < c.multi.objectives.size(); ++k) {
-    const Interval& in = p.intervals[k];
-    h << ", " << objective_name(c.multi.objectives[k]) << ' ' << short_text(in.mean) << " (95 % CI "
-      << short_text(in.lower()) << " .. " << short_text(in.upper()) << ")";
+    h << ", " << objective_name(c.multi.objectives[k]) << ' '
+      << interval_text(c.multi.objectives[k], p.intervals[k]);
+  }
+  h << " (mean +- 95 % CI).\n# Minus the base params, paired on the same runs:";
+  for (std::size_t k = 0; k < c.multi.objectives.size(); ++k) {
+    h << (k ? ", " : " ") << objective_name(c.multi.objectives[k]) << ' '
+      << interval_text(c.multi.objectives[k], p.versus_base[k]);
   }
   h << ".\n# " << (p.dominated_after_reevaluation ? "Dominated" : "Not dominated")
     << " by another front point after re-evaluation; "

@@ -21,6 +21,12 @@ namespace swarmpath::evolve {
 /// "path / A*", "ticks to form", "robots used / N": an objective as axes and tables name it.
 std::string objective_title(ObjectiveKind k);
 
+/// A value of an objective as tables print it: ticks whole, the others to 3 decimals.
+std::string objective_text(ObjectiveKind k, double v);
+
+/// "mean +- half width" (the mean alone when the width is unbounded).
+std::string interval_text(ObjectiveKind k, const Interval& i);
+
 /// generation,hypervolume,front_size,feasible,best_success_rate,min_<objective>...,evaluations,seconds
 void write_pareto_log_csv(std::ostream& out, const std::vector<GenerationRecord>& history,
                           const std::vector<ObjectiveKind>& kinds);

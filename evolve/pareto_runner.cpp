@@ -196,6 +196,8 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
        std::to_string(result.reevaluation_cases.size()) + " fresh cases each");
   const std::vector<RunScore> scores =
       evaluate_batch(f, points, result.reevaluation_cases, o.threads, o.progress);
+  const std::vector<RunScore> base_runs =
+      split_held_out(scores, points.size() - 1, result.settings, result.reevaluation_cases).first;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto [train, held] = split_held_out(scores, i, result.settings, result.reevaluation_cases);
     const bool base = i + 1 == points.size();
@@ -206,6 +208,7 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
       p.objectives = objectives_of(c, p.elite);
     }
     reevaluate_point(c, p, train, held, !points[i].violation.empty());
+    if (!base) p.versus_base = paired_differences(train, base_runs, kinds);
     (base ? result.base : result.front.emplace_back()) = std::move(p);
   }
 

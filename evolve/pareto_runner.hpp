@@ -31,6 +31,7 @@ struct FrontPoint {
   CandidateStats held_out;                    ///< held-out settings (runs == 0 when none)
   bool dominated_after_reevaluation = false;  ///< another front point (re-evaluated) dominates it
   bool dominates_base = false;                ///< it dominates the base params, both re-evaluated
+  std::vector<Interval> versus_base;          ///< per objective, point - base paired over the same fresh runs
 };
 
 struct ParetoResult {

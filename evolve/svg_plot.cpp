@@ -24,7 +24,11 @@ double nice_step(double range) {
 
 std::string short_text(double v) {
   std::ostringstream o;
-  o << std::setprecision(4) << v;
+  if (std::isfinite(v) && std::fabs(v) >= 1e4 && std::fabs(v) < 1e12 && v == std::round(v)) {
+    o << std::fixed << std::setprecision(0) << v;  // 35000, not 3.5e+04
+  } else {
+    o << std::setprecision(4) << v;
+  }
   return o.str();
 }
 

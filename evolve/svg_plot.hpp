@@ -12,7 +12,7 @@ namespace swarmpath::evolve {
 /// 1, 2 or 5 times a power of ten, about range / 5 (1 for an empty range).
 double nice_step(double range);
 
-/// Four significant digits.
+/// Four significant digits (whole numbers from 10^4 on in full).
 std::string short_text(double v);
 
 /// A linear axis: the data range [lo, hi] widened to whole steps.

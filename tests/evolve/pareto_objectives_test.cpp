@@ -3,6 +3,8 @@
 #include "evolve/pareto_objectives.hpp"
 
 #include <cmath>
+#include <span>
+#include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -63,6 +65,27 @@ TEST(ParetoObjectives, IntervalIsStudentsTByHand) {
   EXPECT_NEAR(i.lower(), 200.0 - 248.4138, 1e-3);
   // equal values: zero width
   EXPECT_EQ(objective_intervals(runs, {ObjectiveKind::kRobotsFraction}, 3.0)[0].half_width, 0.0);
+}
+
+TEST(ParetoObjectives, PairedDifferencesByHand) {
+  // a is 100 ticks faster on every seed although the seeds spread the ticks widely
+  const std::vector<RunScore> a = {run(true, 900, 1.0, 0.5), run(true, 4900, 1.2, 0.5),
+                                   run(false, 2900, 0, 1.0)};
+  const std::vector<RunScore> b = {run(true, 1000, 1.1, 0.6), run(false, 5000, 0, 1.0),
+                                   run(true, 3000, 1.0, 0.7)};
+  const std::vector<Interval> d = paired_differences(a, b, kAll);
+  // path: only seed 0 has both successes -> -0.1, one pair, unbounded
+  EXPECT_NEAR(d[0].mean, -0.1, 1e-12);
+  EXPECT_EQ(d[0].n, 1);
+  EXPECT_TRUE(std::isinf(d[0].half_width));
+  // ticks: -100 on every seed -> exactly -100 +- 0, while the unpaired interval is thousands wide
+  EXPECT_EQ(d[1].mean, -100.0);
+  EXPECT_EQ(d[1].half_width, 0.0);
+  EXPECT_GT(objective_intervals(a, kAll, 3.0)[1].half_width, 1000.0);
+  // robots: -0.1, -0.5, +0.3 -> mean -0.1, s = 0.4, half width t(2) 0.4 / sqrt 3
+  EXPECT_NEAR(d[2].mean, -0.1, 1e-12);
+  EXPECT_NEAR(d[2].half_width, 4.302653 * 0.4 / std::sqrt(3.0), 1e-9);
+  EXPECT_THROW(paired_differences(a, std::span<const RunScore>(b).first(2), kAll), std::invalid_argument);
 }
 
 TEST(ParetoObjectives, TQuantileMatchesTablesAndTheNormalLimit) {

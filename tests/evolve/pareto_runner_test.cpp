@@ -167,6 +167,11 @@ TEST(ParetoRunner, ReevaluationMarksPointsThatNoiseFlattered) {
     EXPECT_NE(p.reevaluated_objectives[0], p.objectives[0]);  // fresh seeds, other noise
     EXPECT_GT(p.intervals[0].half_width, 0.0);
     EXPECT_EQ(p.intervals[0].n, 2);  // 1 setting x 2 fresh seeds
+    // paired on the same seeds, the common noise cancels: the difference to the base is exact
+    ASSERT_EQ(p.versus_base.size(), 2u);
+    EXPECT_NEAR(p.versus_base[0].mean, 1000.0 * (p.params.w_away - r.base.params.w_away), 1e-6);
+    EXPECT_NEAR(p.versus_base[0].half_width, 0.0, 1e-6);
+    EXPECT_EQ(p.versus_base[1].n, 2);
   }
   // the base params ran on the same fresh cases
   EXPECT_EQ(r.base.reevaluated.runs, 2);
