@@ -6,7 +6,15 @@
 namespace swarmpath::evolve {
 
 RunScore score_run(const sim::Metrics& m, const CaseInfo& c, const FitnessWeights& w) {
-  if (!m.success) return penalty_score(c, w);
+  if (!m.success) {
+    RunScore s = penalty_score(c, w);
+    // the robots a failed task-allocation run committed: those allocated, when it got that far
+    if (c.mode == sim::Mode::kTaskAllocation && m.allocated >= 0) {
+      s.robots_used = static_cast<double>(m.allocated);
+      s.robots_fraction = s.robots_used / static_cast<double>(c.robots);
+    }
+    return s;
+  }
   RunScore s;
   s.success = true;
   const std::int64_t formed = m.ticks_to_form >= 0 ? m.ticks_to_form : m.ticks;

@@ -55,6 +55,19 @@ TEST(Fitness, RobotsUsedFollowTheMode) {
   const sim::Metrics m = success(100, 100.0, 5, 20);
   EXPECT_DOUBLE_EQ(score_run(m, {1000, 100.0, 40, sim::Mode::kPathFormation}, w).fitness, 5.0 / 40.0);
   EXPECT_DOUBLE_EQ(score_run(m, {1000, 100.0, 40, sim::Mode::kTaskAllocation}, w).fitness, 20.0 / 40.0);
+  // a failed task-allocation run used the robots it allocated (the fitness stays the penalty);
+  // one that never allocated, and a failed path-formation run, used all N
+  sim::Metrics failed;
+  failed.ticks = 1000;
+  failed.allocated = 12;
+  const CaseInfo ta{1000, 100.0, 40, sim::Mode::kTaskAllocation};
+  const RunScore f = score_run(failed, ta, w);
+  EXPECT_EQ(f.robots_used, 12.0);
+  EXPECT_DOUBLE_EQ(f.robots_fraction, 12.0 / 40.0);
+  EXPECT_EQ(f.fitness, penalty_score(ta, w).fitness);
+  EXPECT_EQ(score_run(failed, {1000, 100.0, 40, sim::Mode::kPathFormation}, w).robots_used, 40.0);
+  failed.allocated = -1;
+  EXPECT_EQ(score_run(failed, ta, w).robots_fraction, 1.0);
 }
 
 TEST(Fitness, UnknownPathLengthCountsThePenaltyRatio) {
