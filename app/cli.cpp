@@ -40,7 +40,9 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
   }
   {
     CLI::App* c = app.add_subcommand(
-        "evolve", "Tune controller parameters with an optimiser (evolve config; checkpoints; --resume).");
+        "evolve",
+        "Tune controller parameters with an optimiser, or evolve a Pareto front with nsga2 (evolve config; "
+        "checkpoints; --resume).");
     commands.push_back({c, add_evolve(*c)});
   }
   {

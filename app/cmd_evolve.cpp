@@ -239,7 +239,10 @@ int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
 
 Runner add_evolve(CLI::App& app) {
   auto o = std::make_shared<EvolveOptions>();
-  app.add_option("--config", o->config, "Evolve config (TOML), e.g. configs/evolve/default.toml")->required();
+  app.add_option("--config", o->config,
+                 "Evolve config (TOML), e.g. configs/evolve/default.toml (CMA-ES, one best params file) or "
+                 "configs/evolve/paper-ta-pareto.toml (NSGA-II, a Pareto front)")
+      ->required();
   app.add_option("--out", o->out, "Output folder (default: results/evolve/<config name>)");
   app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");
   app.add_option("--generations", o->generations,

@@ -36,7 +36,7 @@ struct RunScore {
   bool success = false;
   double ticks = 0.0;  ///< ticks_to_form, or max_ticks when the path never formed (censored)
   double path_ratio = std::numeric_limits<double>::quiet_NaN();  ///< path / A*; NaN on failure
-  double robots_used = 0.0;      ///< allocated (ta, also on failure once allocated) or path_robots (pf); else N
+  double robots_used = 0.0;  ///< allocated (ta, also on failure once allocated) or path_robots (pf); else N
   double robots_fraction = 1.0;  ///< robots_used / N
 };
 
