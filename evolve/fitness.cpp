@@ -1,16 +1,19 @@
 // SPDX-License-Identifier: MIT
 #include "fitness.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace swarmpath::evolve {
 
+int ta_robots_used(const sim::Metrics& m) { return std::max(m.allocated, m.path_robots); }
+
 RunScore score_run(const sim::Metrics& m, const CaseInfo& c, const FitnessWeights& w) {
   if (!m.success) {
     RunScore s = penalty_score(c, w);
-    // the robots a failed task-allocation run committed: those allocated, when it got that far
+    // the robots a failed task-allocation run committed, when it got as far as allocating
     if (c.mode == sim::Mode::kTaskAllocation && m.allocated >= 0) {
-      s.robots_used = static_cast<double>(m.allocated);
+      s.robots_used = static_cast<double>(ta_robots_used(m));
       s.robots_fraction = s.robots_used / static_cast<double>(c.robots);
     }
     return s;
@@ -21,7 +24,8 @@ RunScore score_run(const sim::Metrics& m, const CaseInfo& c, const FitnessWeight
   s.ticks = static_cast<double>(formed);
   const bool known = std::isfinite(m.path_length_tu) && std::isfinite(c.astar_tu) && c.astar_tu > 0.0;
   s.path_ratio = known ? m.path_length_tu / c.astar_tu : std::numeric_limits<double>::quiet_NaN();
-  const int used = c.mode == sim::Mode::kTaskAllocation ? m.allocated : m.path_robots;
+  const bool ta = c.mode == sim::Mode::kTaskAllocation;
+  const int used = ta ? (m.allocated >= 0 ? ta_robots_used(m) : -1) : m.path_robots;
   s.robots_used = used >= 0 ? static_cast<double>(used) : static_cast<double>(c.robots);
   s.robots_fraction = s.robots_used / static_cast<double>(c.robots);
   const double max_ticks = static_cast<double>(c.max_ticks);

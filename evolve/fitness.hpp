@@ -36,15 +36,21 @@ struct RunScore {
   bool success = false;
   double ticks = 0.0;  ///< ticks_to_form, or max_ticks when the path never formed (censored)
   double path_ratio = std::numeric_limits<double>::quiet_NaN();  ///< path / A*; NaN on failure
-  double robots_used = 0.0;  ///< allocated (ta, also on failure once allocated) or path_robots (pf); else N
+  double robots_used =
+      0.0;  ///< ta_robots_used (ta, once allocated, failures too) or path_robots (pf); else N
   double robots_fraction = 1.0;  ///< robots_used / N
 };
+
+/// The robots a task-allocation run used: those allocated, or the chain's robots when more (scouts
+/// that were still exploring when the founder allocated can end up in the chain; allocated alone
+/// would not count them).
+int ta_robots_used(const sim::Metrics& m);
 
 /// fitness = w_fail (1 - success) + w_time t / max_ticks + w_path r + w_robots u / N, where on
 /// success t = ticks_to_form, r = path / A*, u = allocated (ta) or path_robots (pf), and on
 /// failure t = max_ticks, r = fail_path_ratio, u = N. A success whose path or A* length is
 /// unknown counts r = fail_path_ratio. The fitness of a failure is penalty_score's; its robots_used
-/// is what it committed: the allocated robots of a task-allocation run that allocated, else N.
+/// is what it committed: ta_robots_used for a task-allocation run that allocated, else N.
 RunScore score_run(const sim::Metrics& m, const CaseInfo& c, const FitnessWeights& w);
 
 /// The score of a run that was not simulated because the candidate breaks a constraint: a

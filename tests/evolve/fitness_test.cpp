@@ -68,6 +68,8 @@ TEST(Fitness, RobotsUsedFollowTheMode) {
   EXPECT_EQ(score_run(failed, {1000, 100.0, 40, sim::Mode::kPathFormation}, w).robots_used, 40.0);
   failed.allocated = -1;
   EXPECT_EQ(score_run(failed, ta, w).robots_fraction, 1.0);
+  // scouts that formed the chain before the founder allocated are used robots too
+  EXPECT_DOUBLE_EQ(score_run(success(100, 100.0, 17, 3), ta, w).robots_used, 17.0);
 }
 
 TEST(Fitness, UnknownPathLengthCountsThePenaltyRatio) {
