@@ -35,6 +35,10 @@ TEST(ParetoConfig, TheShippedParetoConfigLoads) {
   EXPECT_EQ(c.mode, sim::Mode::kTaskAllocation);
   EXPECT_EQ(c.optimizer.name, "nsga2");
   EXPECT_EQ(c.multi.objectives.size(), 3u);
+  const EvolveConfig two = load_evolve_config(testing::source("configs/evolve/paper-ta-pareto-2d.toml"));
+  EXPECT_EQ(two.multi.objectives,
+            (std::vector<ObjectiveKind>{ObjectiveKind::kTicks, ObjectiveKind::kRobotsFraction}));
+  EXPECT_EQ(two.multi.reference, (Vector{36000.0, 1.0}));
 }
 
 TEST(ParetoConfig, Nsga2NeedsObjectives) {
