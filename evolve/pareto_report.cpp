@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "pareto_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
@@ -213,7 +214,9 @@ void write_pareto_svg(std::ostream& out, const EvolveConfig& c, const ParetoResu
     for (std::size_t b = a + 1; b < kinds.size(); ++b) pairs.emplace_back(a, b);
   }
   const double panel_w = 340.0, panel_h = 300.0, gap = 90.0, left = 78.0, top = 60.0;
-  const double width = left + static_cast<double>(pairs.size()) * (panel_w + gap) - gap + 30.0;
+  // at least wide enough for the subtitle and the legend when there is a single panel (2 objectives)
+  const double width =
+      std::max(720.0, left + static_cast<double>(pairs.size()) * (panel_w + gap) - gap + 30.0);
   const double height = top + panel_h + 150.0;
   std::ostringstream sub;
   sub << r.front.size() << " front points on " << r.base.reevaluated.runs

@@ -129,11 +129,9 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
   const bool fixed = c.evaluation.fixed_seeds;
   result.cases = first_cases(c, result.settings);
 
-  const Stopwatch clock;
-  const double recorded_start = st.seconds;
-  const auto recorded = [&] { return o.wall_time ? recorded_start + clock.seconds() : 0.0; };
+  const RunClock clock(st.seconds, o.wall_time);
   std::string reason;
-  while ((reason = budget_stop(budget, st, recorded_start + clock.seconds(), opt->done())).empty()) {
+  while ((reason = budget_stop(budget, st, clock.elapsed(), opt->done())).empty()) {
     const std::int64_t gen = st.generation;
     const std::vector<Vector> xs = opt->ask();
     const std::vector<Decoded> decoded = decode_all(c.genome, xs);
@@ -172,7 +170,7 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
     }
     std::function<void(const RunState&)> write;
     if (files) write = [&](const RunState& now) { write_progress(c, now, o.out_dir); };
-    if (finish_generation(st, rec, xs.size(), recorded(), opt->state(), o, write)) {
+    if (finish_generation(st, rec, xs.size(), clock.recorded(), opt->state(), o, write)) {
       reason = "callback";
       break;
     }
@@ -227,7 +225,7 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
     if (p.reevaluated_violation <= 0.0) feasible.push_back(p.reevaluated_objectives);
   }
   result.reevaluated_hypervolume = feasible.empty() ? 0.0 : hypervolume(feasible, c.multi.reference);
-  result.seconds = recorded();
+  result.seconds = clock.recorded();
   result.state = st;
   if (files) write_final(c, result, o);
   return result;

@@ -200,12 +200,8 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   const bool fixed = c.evaluation.fixed_seeds;
   result.cases = first_cases(c, result.settings);
 
-  const Stopwatch clock;
-  const double recorded_start = st.seconds;
-  const auto recorded = [&] { return o.wall_time ? recorded_start + clock.seconds() : 0.0; };
-  const auto stop_reason = [&] {
-    return budget_stop(budget, st, recorded_start + clock.seconds(), opt->done());
-  };
+  const RunClock clock(st.seconds, o.wall_time);
+  const auto stop_reason = [&] { return budget_stop(budget, st, clock.elapsed(), opt->done()); };
 
   const auto keep = static_cast<std::size_t>(c.reevaluate.top_k);
   std::string reason;
@@ -246,7 +242,7 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
     }
     std::function<void(const RunState&)> write;
     if (files) write = [&](const RunState& now) { write_progress_files(c, now, o.out_dir); };
-    if (finish_generation(st, rec, xs.size(), recorded(), opt->state(), o, write)) {
+    if (finish_generation(st, rec, xs.size(), clock.recorded(), opt->state(), o, write)) {
       reason = "callback";
       break;
     }
@@ -279,7 +275,7 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
       result.best = i;
     }
   }
-  result.seconds = recorded();
+  result.seconds = clock.recorded();
   result.state = st;
 
   if (files) {
