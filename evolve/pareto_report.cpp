@@ -28,6 +28,20 @@ nlohmann::ordered_json number_or_null(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
 }
 
+// One {mean, ci95_low, ci95_high, n} object per objective, keyed by its name.
+nlohmann::ordered_json intervals_json(const std::vector<ObjectiveKind>& objectives,
+                                      const std::vector<Interval>& intervals) {
+  nlohmann::ordered_json j;
+  for (std::size_t k = 0; k < objectives.size(); ++k) {
+    const Interval& i = intervals[k];
+    j[std::string(objective_name(objectives[k]))] = {{"mean", number_or_null(i.mean)},
+                                                     {"ci95_low", number_or_null(i.lower())},
+                                                     {"ci95_high", number_or_null(i.upper())},
+                                                     {"n", i.n}};
+  }
+  return j;
+}
+
 nlohmann::ordered_json point_json(const EvolveConfig& c, const FrontPoint& p, bool base) {
   nlohmann::ordered_json j;
   if (!base) {
@@ -40,30 +54,14 @@ nlohmann::ordered_json point_json(const EvolveConfig& c, const FrontPoint& p, bo
     }
     j["generation_objectives"] = gen;
   }
-  nlohmann::ordered_json fresh;
-  for (std::size_t k = 0; k < c.multi.objectives.size(); ++k) {
-    const Interval& i = p.intervals[k];
-    fresh[std::string(objective_name(c.multi.objectives[k]))] = {{"mean", number_or_null(i.mean)},
-                                                                 {"ci95_low", number_or_null(i.lower())},
-                                                                 {"ci95_high", number_or_null(i.upper())},
-                                                                 {"n", i.n}};
-  }
-  j["reevaluated_objectives"] = fresh;
+  j["reevaluated_objectives"] = intervals_json(c.multi.objectives, p.intervals);
   j["reevaluated"] = stats_json(p.reevaluated);
   j["held_out"] = p.held_out.runs > 0 ? stats_json(p.held_out) : nlohmann::ordered_json(nullptr);
   j["feasible_after_reevaluation"] = p.reevaluated_violation <= 0.0;
   if (!base) {
     j["dominated_after_reevaluation"] = p.dominated_after_reevaluation;
     j["dominates_base"] = p.dominates_base;
-    nlohmann::ordered_json versus;
-    for (std::size_t k = 0; k < c.multi.objectives.size(); ++k) {
-      const Interval& d = p.versus_base[k];
-      versus[std::string(objective_name(c.multi.objectives[k]))] = {{"mean", number_or_null(d.mean)},
-                                                                    {"ci95_low", number_or_null(d.lower())},
-                                                                    {"ci95_high", number_or_null(d.upper())},
-                                                                    {"n", d.n}};
-    }
-    j["minus_base_paired"] = versus;
+    j["minus_base_paired"] = intervals_json(c.multi.objectives, p.versus_base);
   }
   nlohmann::ordered_json tuned;
   for (const Gene& g : c.genome.genes) tuned[std::string(g.info->name)] = param_value_json(p.params, *g.info);
