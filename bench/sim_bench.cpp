@@ -49,10 +49,12 @@ void BM_Env4Tiled(benchmark::State& state) { run_ticks(state, env4_tiled(static_
 
 BENCHMARK(BM_Env4Tiled)->Arg(1)->Arg(3)->Arg(10)->Iterations(400)->Unit(benchmark::kMillisecond);
 
-// path formation, 100 robots in env4, from deployment to path completion (seed 3)
+// path formation, 100 robots in env4, from deployment to path completion (seed 3), with the
+// robots at v_max = state.range(0) cm/s (10: SPEC's default; 20: genomes/paper-v20.toml)
 void BM_PathFormationEnv4ToCompletion(benchmark::State& state) {
   const sim::Scenario s = env4();
-  const sim::Params p;
+  sim::Params p;
+  p.v_max = static_cast<double>(state.range(0));
   sim::Metrics m;
   for (auto _ : state) {
     m = sim::evaluate(p, s, sim::Mode::kPathFormation, 3);
@@ -65,7 +67,12 @@ void BM_PathFormationEnv4ToCompletion(benchmark::State& state) {
   state.counters["success"] = m.success ? 1 : 0;
 }
 
-BENCHMARK(BM_PathFormationEnv4ToCompletion)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_PathFormationEnv4ToCompletion)
+    ->Arg(10)
+    ->Arg(20)
+    ->Iterations(1)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 
 }  // namespace
 }  // namespace swarmpath::bench

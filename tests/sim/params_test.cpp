@@ -3,6 +3,7 @@
 #include "sim/params.hpp"
 
 #include <sstream>
+#include <string>
 
 #include <gtest/gtest.h>
 
@@ -92,6 +93,17 @@ TEST(Params, PaperGenomeFileHoldsTheDefaults) {
   const Params defaults;
   for (const ParamInfo& info : param_table())
     EXPECT_EQ(get_value(p, info), get_value(defaults, info)) << info.name;
+}
+
+// the speed study (docs/CHOICES.md, "Robot speed") changes v_max and nothing else
+TEST(Params, SpeedStudyGenomeDiffersFromThePaperGenomeOnlyInVmax) {
+  const Params paper = load_params(test::source_path("genomes/paper.toml"));
+  const Params fast = load_params(test::source_path("genomes/paper-v20.toml"));
+  EXPECT_EQ(fast.v_max, 20.0);
+  for (const ParamInfo& info : param_table()) {
+    if (std::string(info.name) == "v_max") continue;
+    EXPECT_EQ(get_value(fast, info), get_value(paper, info)) << info.name;
+  }
 }
 
 }  // namespace
