@@ -29,7 +29,7 @@ const std::array kTable{
   ParamInfo{ 4, "r_rec",          R, &P::r_rec,          20,   10,   60,    1,    "P",   "cm",    "recovery repulsion range", {}},
   ParamInfo{ 5, "k_rec",          R, &P::k_rec,          1.0,  0,    3,     0.05, "",    "",      "recovery repulsion gain", {}},
   ParamInfo{ 6, "T_lost",         I, &P::t_lost,         3,    1,    20,    1,    "",    "ticks", "invisibility debounce before lost", {}},
-  ParamInfo{ 7, "v_max",          R, &P::v_max,          10,   5,    30,    0.5,  "",    "cm/s",  "max wheel speed; also s in l = s*t", {}},
+  ParamInfo{ 7, "v_max",          R, &P::v_max,          20,   5,    30,    0.5,  "",    "cm/s",  "max wheel speed; also s in l = s*t", {}},
   ParamInfo{ 8, "v_align",        R, &P::v_align,        0.5,  0.1,  1.0,   0.05, "",    "",      "speed factor during OPT1/OPT2", {}},
   ParamInfo{ 9, "theta_hard",     R, &P::theta_hard,     90,   60,   150,   1,    "",    "deg",   "hard-turn threshold", {}},
   ParamInfo{10, "theta_soft",     R, &P::theta_soft,     70,   30,   90,    1,    "",    "deg",   "soft-turn threshold (<= theta_hard)", {}},
@@ -78,6 +78,7 @@ const std::array kTable{
   ParamInfo{ 0, "guide_gap", R, &P::guide_gap, 40, 20, 90, 5, "", "cm", "distance a follower keeps to its guide", {}},
   ParamInfo{ 0, "T_guide_lost", R, &P::t_guide_lost, 30, 10, 1000, 10, "", "ticks", "ticks without a guide in view before a follower explores on its own", {}},
   ParamInfo{ 0, "backoff_spot",   B, &P::backoff_spot,   0,    0,    1,     1,    "",    "",      "a forming robot backs off to the spot d_sub from its target toward the nest (false: along its own way from the nest)", {}},
+  ParamInfo{ 0, "backoff_far_spot", B, &P::backoff_far_spot, 1, 0, 1,     1,    "",    "",      "a forming robot that found the goal from its far side (farther from the nest than the goal) backs off to the spot, not along its own way", {}},
 };
 
 // clang-format on

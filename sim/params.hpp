@@ -29,7 +29,7 @@ struct Params {
   double k_rec = 1.0;    ///< 5: recovery repulsion gain
   double t_lost = 3;     ///< 6: T_lost, invisibility debounce [ticks]
   // motion (SPEC §1.2, §2.1)
-  double v_max = 10;        ///< 7: max wheel speed, also s in Eq. 1 [cm/s]
+  double v_max = 20;        ///< 7: max wheel speed, also s in Eq. 1 [cm/s] (SPEC: 10 [A]; docs/CHOICES.md)
   double v_align = 0.5;     ///< 8: speed factor while aligning
   double theta_hard = 90;   ///< 9: hard-turn threshold [deg]
   double theta_soft = 70;   ///< 10: soft-turn threshold [deg]
@@ -83,6 +83,7 @@ struct Params {
   double t_guide_lost = 30;         ///< ticks without a guide in view before a follower explores alone
   bool backoff_spot =
       false;  ///< forming: back off to the spot d_sub from the target toward the nest (else along the trail)
+  bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
 };
 
 enum class ParamType : std::uint8_t { kReal, kInteger, kBool, kChoice };

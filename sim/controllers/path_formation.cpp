@@ -250,6 +250,8 @@ void take_target(const PfContext& c, PfMemory& m) {  // row 1: the goal if in ra
   const bool goal = c.sight.goal != nullptr && c.sight.goal->distance_cm <= c.p.d_detect;
   m.target = follow(goal ? *c.sight.goal : *c.sight.red_near, c.in.pose);
   m.target_reached = true;  // found within d_detect
+  // found the goal from its far side: its own way from the nest leads round the goal (R)
+  m.far_side = goal && dist(c.in.pose.p, c.nest) > dist(m.target.last_seen, c.nest);
   m.parent = Tracked{};
   m.child = Tracked{};
 }
@@ -259,6 +261,7 @@ void target_becomes_parent(const PfContext&, PfMemory& m) { m.parent = m.target;
 void retarget(const PfContext& c, PfMemory& m) {
   m.target = follow(*c.sight.red_nearer_nest, c.in.pose);
   m.target_reached = c.sight.red_nearer_nest->distance_cm <= c.p.d_detect;  // else walk to it first
+  m.far_side = false;  // the tip is reached from the chain's side; its way home is the trail
 }
 
 void grow_budget(const PfContext& c, PfMemory& m) {  // row 4: "increase the minimum exploring time"
@@ -407,7 +410,9 @@ Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const
     if (len <= 2.0) return stop(PfState::kSubgoalForming);
     return drive(p, mem, (std::min(p.v_max, len) / len) * back, PfState::kSubgoalForming);
   }
-  if (mem.pf.target_reached && !p.backoff_spot) {
+  // a robot that found the goal from its far side backs off to the spot, not round the goal (R)
+  const bool spot = p.backoff_spot || (p.backoff_far_spot && mem.pf.far_side);
+  if (mem.pf.target_reached && !spot) {
     // back off along the robot's own way from the nest: a route it knows is passable
     if (!mem.nav.on_trail && !mem.trail.empty()) {
       mem.nav.on_trail = true;
@@ -422,9 +427,9 @@ Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const
     const Vec2 tgt = mem.pf.target.last_seen;
     const Vec2 to_nest = mem.nest - tgt;
     const double len = norm(to_nest);
-    const Vec2 spot = len > 0.0 ? tgt + ((p.d_sub + 5.0) * kCm / len) * to_nest : mem.nest;
+    const Vec2 spot_at = len > 0.0 ? tgt + ((p.d_sub + 5.0) * kCm / len) * to_nest : mem.nest;
     const Avoidance avoid = diffusion(in.proximity, p);
-    const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest, 0.25 * p.t_trap, &spot);
+    const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest, 0.25 * p.t_trap, &spot_at);
     const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
     return drive(p, mem, p.v_max * v, PfState::kSubgoalForming);
   }

@@ -61,6 +61,7 @@ struct PfMemory {
   bool explore_blocked = false;  ///< edge following found no way farther from the nest (row 2)
   Tracked target;                ///< what the robot backs off from while forming
   bool target_reached = true;    ///< forming: has been within d_detect of the target (row 5 needs it)
+  bool far_side = false;         ///< forming: found the goal from its far side (farther from the nest)
   Vec2 last_saw_target;          ///< forming: the robot's position when it last saw the target [m]
   bool to_view_edge = false;     ///< forming: target lost, going back to last_saw_target (row 7a)
   Tracked parent;                ///< goal-side reference (the goal beacon or a robot)

@@ -18,9 +18,9 @@ TEST(Drive, StraightAheadIsNoTurnAtMinOfLengthAndVmax) {
   EXPECT_EQ(m, TurnMode::kNone);
   EXPECT_DOUBLE_EQ(w.left_cm_s, 6.0);
   EXPECT_DOUBLE_EQ(w.right_cm_s, 6.0);
-  w = wheels_from_vector(at(0.0, 25.0), p, m);  // b = min(|V|, v_max)
-  EXPECT_DOUBLE_EQ(w.left_cm_s, 10.0);
-  EXPECT_DOUBLE_EQ(w.right_cm_s, 10.0);
+  w = wheels_from_vector(at(0.0, 25.0), p, m);  // b = min(|V|, v_max), v_max = 20 < 25
+  EXPECT_DOUBLE_EQ(w.left_cm_s, p.v_max);
+  EXPECT_DOUBLE_EQ(w.right_cm_s, p.v_max);
 }
 
 TEST(Drive, SoftTurnSpeedsFollowTheFormula) {
@@ -42,11 +42,11 @@ TEST(Drive, HardTurnSpinsInPlaceTowardTheVector) {
   TurnMode m = TurnMode::kNone;
   WheelSpeeds w = wheels_from_vector(at(120.0), p, m);
   EXPECT_EQ(m, TurnMode::kHard);
-  EXPECT_DOUBLE_EQ(w.left_cm_s, -10.0);
-  EXPECT_DOUBLE_EQ(w.right_cm_s, 10.0);
+  EXPECT_DOUBLE_EQ(w.left_cm_s, -p.v_max);
+  EXPECT_DOUBLE_EQ(w.right_cm_s, p.v_max);
   w = wheels_from_vector(at(-150.0, 2.0), p, m);  // hard turn uses v_max whatever |V|
-  EXPECT_DOUBLE_EQ(w.left_cm_s, 10.0);
-  EXPECT_DOUBLE_EQ(w.right_cm_s, -10.0);
+  EXPECT_DOUBLE_EQ(w.left_cm_s, p.v_max);
+  EXPECT_DOUBLE_EQ(w.right_cm_s, -p.v_max);
 }
 
 TEST(Drive, HysteresisKeepsTheModeBetweenThresholds) {

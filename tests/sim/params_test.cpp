@@ -95,14 +95,19 @@ TEST(Params, PaperGenomeFileHoldsTheDefaults) {
     EXPECT_EQ(get_value(p, info), get_value(defaults, info)) << info.name;
 }
 
-// the speed study (docs/CHOICES.md, "Robot speed") changes v_max and nothing else
-TEST(Params, SpeedStudyGenomeDiffersFromThePaperGenomeOnlyInVmax) {
+// the speed study (docs/CHOICES.md, "Robot speed"): genomes/paper-v10.toml is the paper genome at
+// SPEC's assumed 10 cm/s, with the trail back-off that was measured at that speed
+TEST(Params, TenCmPerSecondGenomeDiffersFromThePaperGenomeOnlyInSpeedAndBackOff) {
   const Params paper = load_params(test::source_path("genomes/paper.toml"));
-  const Params fast = load_params(test::source_path("genomes/paper-v20.toml"));
-  EXPECT_EQ(fast.v_max, 20.0);
+  const Params slow = load_params(test::source_path("genomes/paper-v10.toml"));
+  EXPECT_EQ(paper.v_max, 20.0);
+  EXPECT_EQ(slow.v_max, 10.0);
+  EXPECT_TRUE(paper.backoff_far_spot);
+  EXPECT_FALSE(slow.backoff_far_spot);
   for (const ParamInfo& info : param_table()) {
-    if (std::string(info.name) == "v_max") continue;
-    EXPECT_EQ(get_value(fast, info), get_value(paper, info)) << info.name;
+    const std::string name(info.name);
+    if (name == "v_max" || name == "backoff_far_spot") continue;
+    EXPECT_EQ(get_value(slow, info), get_value(paper, info)) << info.name;
   }
 }
 
