@@ -233,9 +233,19 @@ bool parent_done_or_last_subgoal(const PfContext& c) {  // row 11, label h
   return c.m.parent.id == kGoalEmitter || (c.m.parent.visible && c.m.parent.color == Led::kBrown);
 }
 
+bool seeking_reference(const PfContext& c) {  // R: one reference out of view, looked for (align())
+  if (!c.p.seek_hidden_reference || static_cast<double>(c.m.t_state) >= c.p.t_align_max) return false;
+  const bool parent_lost = lost(c.m.parent, c.p);
+  if (parent_lost == lost(c.m.child, c.p)) return false;  // both in view, or both lost
+  const Tracked& hidden = parent_lost ? c.m.parent : c.m.child;
+  return dist(c.in.pose.p, hidden.last_seen) / kCm > c.p.d_detect;  // not where it was last seen
+}
+
 bool reference_lost(const PfContext& c) {  // row 13, label f
   // a reference that slipped behind an obstacle while the robot moved counts as lost only once
-  // the robot is back where it last saw both and it is still out of sight
+  // the robot is back where it last saw both and it is still out of sight, and (option) it has
+  // looked for it where it was last seen
+  if (seeking_reference(c)) return false;
   const bool back = !c.m.view_limited || dist(c.in.pose.p, c.m.safe_pos) <= 0.02;
   return (lost(c.m.parent, c.p) || lost(c.m.child, c.p)) && back;
 }
@@ -439,6 +449,27 @@ Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const
   return drive(p, mem, p.v_max * v, PfState::kSubgoalForming);
 }
 
+// drive at the alignment speed toward where a reference out of view was last seen (robot frame, cm)
+Command look_for(const Percept& in, const Params& p, RobotMemory& mem, Vec2 toward, PfState s) {
+  const Avoidance avoid = diffusion(in.proximity, p);
+  Vec2 v = (1.0 / std::max(norm(toward), 1e-9)) * toward;
+  if (avoid.collision) v += avoid.direction;
+  return drive(p, mem, p.v_align * p.v_max * v, s);
+}
+
+// SUB_NEST (LED blue) waits for its parent to be done (row 11). A parent that moved out of view
+// during its own optimisation 1 (behind an obstacle's corner; the camera's view of a corner need
+// not be mutual) would be waited for for ever: drive toward where it was last seen, at most to
+// d_detect from there, while the child stays in view (R, seek_hidden_reference)
+Command wait_for_parent(const Percept& in, const Params& p, RobotMemory& mem) {
+  const PfMemory& m = mem.pf;
+  const PfState s = PfState::kSubNest;
+  if (!p.seek_hidden_reference || !lost(m.parent, p) || lost(m.child, p)) return stop(s);
+  const Vec2 toward = local_cm(in.pose, m.parent);
+  if (norm(toward) <= p.d_detect) return stop(s);
+  return look_for(in, p, mem, toward, s);
+}
+
 // SPEC §2.4: drive to the alignment target P; speed v_align v_max, tapering over the last
 // centimetres (P in cm, so |P| cm/s reaches it in about a second) so that the robot stops on P.
 Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
@@ -449,6 +480,18 @@ Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
   // alignment began (both were in view there) and stay (SPEC §2.4, bounded by line of sight)
   if (!m.parent.visible || !m.child.visible || static_cast<double>(m.t_state) >= p.t_align_max) {
     m.view_limited = true;
+  }
+  // still out of view from there (a subgoal's parent just behind an obstacle's corner): drive
+  // toward where it was last seen until both are in view, and stop there (R)
+  const bool one_hidden = m.parent.visible != m.child.visible;
+  if (p.seek_hidden_reference && m.view_limited && one_hidden &&
+      static_cast<double>(m.t_state) < p.t_align_max && (m.seek_ref || dist(in.pose.p, m.safe_pos) <= 0.02)) {
+    m.seek_ref = true;
+    return look_for(in, p, mem, m.parent.visible ? b : a, s);
+  }
+  if (m.seek_ref && m.parent.visible && m.child.visible) {
+    m.seek_ref = false;
+    m.safe_pos = in.pose.p;  // found it: both in view here
   }
   const Vec2 target =
       m.view_limited ? (1.0 / kCm) * in.pose.to_local(m.safe_pos - in.pose.p) : alignment_target(a, b, p);
@@ -606,6 +649,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
     m.last_saw_target = in.pose.p;
     m.view_limited = false;
     m.safe_pos = in.pose.p;
+    m.seek_ref = false;
     m.guide = false;
     m.follow_guide = false;
     if (fired->to == PfState::kReturnToNest && !m.sighted_this_trip) m.has_sighting = false;  // a stale lead
@@ -635,9 +679,11 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
     case PfState::kOpt2:
       cmd = align(in, p, mem, m.state);
       break;
+    case PfState::kSubNest:
+      cmd = wait_for_parent(in, p, mem);
+      break;
     case PfState::kResting:
     case PfState::kSubgoal:
-    case PfState::kSubNest:
     case PfState::kPathDone:
     case PfState::kRecovery:
       cmd = stop(m.state);

@@ -86,6 +86,39 @@ TEST(PfRun, AShortChainFormsAndBothPassesComplete) {
   EXPECT_EQ(chain_to_goal(w, m.final_path.robots.front()), m.final_path.robots);
 }
 
+// A SUB_NEST robot whose parent finished its optimisation 1 behind an obstacle's corner (out of
+// view; the camera's view of a corner need not be mutual) waited for ever for row 11 (env4, 90
+// robots, seed 1). It drives toward where it last saw the parent until it sees it (R).
+TEST(PfRun, ASubNestLooksForAParentThatMovedOutOfView) {
+  const Scenario s = test::small_arena("[[box]]\ncenter = [0.0, 0.6]\nsize = [0.6, 0.8]\n", 3);
+  for (const bool seek : {true, false}) {
+    Params p;
+    p.seek_hidden_reference = seek;
+    // robot 0: the sub-nest; robot 1: its parent, done, behind the box; robot 2: its child
+    World w = make_world(s, p, Mode::kPathFormation, 1,
+                         std::vector<Pose>{at(-0.6, 0.7), at(0.5, 0.1), at(-1.2, 0.5)});
+    PfMemory& m = w.memory[0].pf;
+    m.state = PfState::kSubNest;
+    m.parent = ref(1, {0.0, -0.1});  // where it was before its own alignment
+    m.child = ref(2, {-1.2, 0.5});
+    w.memory[1].pf.state = PfState::kPathDone;
+    w.memory[1].pf.parent = ref(kGoalEmitter, s.goal);
+    w.memory[2].pf.state = PfState::kSubNest;
+    w.memory[2].pf.parent = ref(0, {-0.6, 0.7});
+    w.leds = {Led::kBlue, Led::kBrown, Led::kBlue};
+    MetricsAccumulator acc;
+    acc.begin(3);
+    while (m.state == PfState::kSubNest && w.tick < 600) step(s, p, w, acc);
+    if (seek) {
+      EXPECT_EQ(m.state, PfState::kOpt2) << "still " << to_string(m.state) << " at tick " << w.tick;
+      EXPECT_GT(dist(w.positions[0], {-0.6, 0.7}), 0.05) << "found it without moving";
+    } else {
+      EXPECT_EQ(m.state, PfState::kSubNest);  // SPEC as written: it waits for ever
+      EXPECT_LT(dist(w.positions[0], {-0.6, 0.7}), 0.02);
+    }
+  }
+}
+
 // At 20 cm/s most of the 20 robots reach the goal within a few hundred ticks, many from its far
 // side; backing off along their own (far-side) way, they all turned RED round the goal and no chain
 // reached the nest (docs/CHOICES.md, "Back off to a spot from the far side").

@@ -268,14 +268,47 @@ TEST(PfTable, Row12Opt2DoneWhenAligned) {  // label a
 }
 
 TEST(PfTable, Row13ReferenceLostWhileAligning) {  // label f
+  Params literal;  // SPEC §2.3 as written: a lost reference is the end of the alignment
+  literal.seek_hidden_reference = false;
   for (const PfState s : {PfState::kOpt1, PfState::kOpt2}) {
     Reading r;
     PfMemory m = aligning(s, r);
     r.blobs.erase(r.blobs.begin());  // the parent is gone
     m.parent.unseen = 2;
-    EXPECT_EQ(fire(m, r), s == PfState::kOpt1 ? "#13a" : "#13b");
+    EXPECT_EQ(fire(m, r, literal), s == PfState::kOpt1 ? "#13a" : "#13b");
     EXPECT_EQ(m.state, PfState::kRecovery);
   }
+}
+
+TEST(PfTable, Row13WaitsWhileAHiddenReferenceIsLookedFor) {  // R: seek_hidden_reference (default)
+  const Params p;
+  // the parent, last seen 70 cm ahead, is out of view; the child is in view
+  const auto parent_hidden = [](PfMemory& m, Reading& r) {
+    m = aligning(PfState::kOpt1, r);
+    r.blobs.erase(r.blobs.begin());
+    m.parent.unseen = 2;
+  };
+  Reading r;
+  PfMemory m;
+  parent_hidden(m, r);
+  EXPECT_EQ(fire(m, r, p), "");  // first drive toward where it was seen
+  EXPECT_EQ(m.state, PfState::kOpt1);
+  Reading r2;
+  PfMemory there;  // at the place it was last seen (within d_detect) and not there: lost
+  parent_hidden(there, r2);
+  there.parent.last_seen = {0.25, 0.0};
+  EXPECT_EQ(fire(there, r2, p), "#13a");
+  Reading r3;
+  PfMemory late;  // out of time: lost
+  parent_hidden(late, r3);
+  late.t_state = static_cast<std::int64_t>(p.t_align_max);
+  EXPECT_EQ(fire(late, r3, p), "#13a");
+  Reading r4;
+  PfMemory both;  // both out of view: lost
+  parent_hidden(both, r4);
+  r4.blobs.clear();
+  both.child.unseen = 2;
+  EXPECT_EQ(fire(both, r4, p), "#13a");
 }
 
 TEST(PfTable, Row14RevertOrphansOnlyWithTheOption) {
