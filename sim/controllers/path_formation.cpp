@@ -142,6 +142,11 @@ Vec2 local_cm(const Pose& pose, const Tracked& t) {
   return (1.0 / kCm) * pose.to_local(t.last_seen - pose.p);
 }
 
+// back where the alignment began: align() stops within d_tol of it (1 cm for the bodies' give)
+bool back_at_safe_pos(const Pose& pose, const PfMemory& m, const Params& p) {
+  return dist(pose.p, m.safe_pos) / kCm <= p.d_tol + 1.0;
+}
+
 // ---- guards, named after the paper's conditions ----
 
 bool found_goal_or_subgoal(const PfContext& c) {  // row 1, label c
@@ -220,8 +225,7 @@ bool alignment_done(const PfContext& c) {  // rows 10 and 12
   if (static_cast<double>(c.m.t_state) >= c.p.t_align_max && both_seen) return true;
   if (lost(c.m.parent, c.p) || lost(c.m.child, c.p)) return false;
   // as aligned as the view allows: a reference slipped out of sight; back at the start, both in view
-  if (c.m.view_limited && c.m.parent.visible && c.m.child.visible &&
-      dist(c.in.pose.p, c.m.safe_pos) <= 0.02) {
+  if (c.m.view_limited && c.m.parent.visible && c.m.child.visible && back_at_safe_pos(c.in.pose, c.m, c.p)) {
     return true;
   }
   const Vec2 a = local_cm(c.in.pose, c.m.parent);
@@ -246,7 +250,9 @@ bool reference_lost(const PfContext& c) {  // row 13, label f
   // the robot is back where it last saw both and it is still out of sight, and (option) it has
   // looked for it where it was last seen
   if (seeking_reference(c)) return false;
-  const bool back = !c.m.view_limited || dist(c.in.pose.p, c.m.safe_pos) <= 0.02;
+  // (or, stall guard, cannot get back there in another T_align_max)
+  const bool back = !c.m.view_limited || back_at_safe_pos(c.in.pose, c.m, c.p) ||
+                    static_cast<double>(c.m.t_state) >= 2.0 * c.p.t_align_max;
   return (lost(c.m.parent, c.p) || lost(c.m.child, c.p)) && back;
 }
 
@@ -485,7 +491,7 @@ Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
   // toward where it was last seen until both are in view, and stop there (R)
   const bool one_hidden = m.parent.visible != m.child.visible;
   if (p.seek_hidden_reference && m.view_limited && one_hidden &&
-      static_cast<double>(m.t_state) < p.t_align_max && (m.seek_ref || dist(in.pose.p, m.safe_pos) <= 0.02)) {
+      static_cast<double>(m.t_state) < p.t_align_max && (m.seek_ref || back_at_safe_pos(in.pose, m, p))) {
     m.seek_ref = true;
     return look_for(in, p, mem, m.parent.visible ? b : a, s);
   }
@@ -501,7 +507,10 @@ Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
   const double speed = std::min(p.v_align * p.v_max, len);
   Vec2 v = (1.0 / len) * target;
   // R_keep bounds the robot itself, not only P: pushed past it, go back toward that reference
-  if (norm(a) > p.r_keep) {
+  // (not on the way back to where the alignment began: both were in view there)
+  if (m.view_limited) {
+    // the way back is the target
+  } else if (norm(a) > p.r_keep) {
     v = (1.0 / norm(a)) * a;
   } else if (norm(b) > p.r_keep) {
     v = (1.0 / norm(b)) * b;

@@ -280,6 +280,32 @@ TEST(PfTable, Row13ReferenceLostWhileAligning) {  // label f
   }
 }
 
+TEST(PfTable, Row13CountsALossOnceBackWhereTheAlignmentBegan) {
+  Params literal;
+  literal.seek_hidden_reference = false;
+  const auto parent_hidden_away_from_start = [](PfMemory& m, Reading& r, Vec2 start) {
+    m = aligning(PfState::kOpt2, r);
+    r.blobs.erase(r.blobs.begin());
+    m.parent.unseen = 2;
+    m.view_limited = true;
+    m.safe_pos = start;
+  };
+  Reading r;
+  PfMemory m;
+  parent_hidden_away_from_start(m, r, {0.30, 0.0});  // on its way back: not yet
+  m.t_state = static_cast<std::int64_t>(literal.t_align_max);
+  EXPECT_EQ(fire(m, r, literal), "");
+  Reading r2;
+  PfMemory near;  // back within d_tol (where align() stops) counts as back
+  parent_hidden_away_from_start(near, r2, {0.028, 0.0});
+  EXPECT_EQ(fire(near, r2, literal), "#13b");
+  Reading r3;
+  PfMemory stuck;  // stall guard: cannot get back in another T_align_max
+  parent_hidden_away_from_start(stuck, r3, {0.30, 0.0});
+  stuck.t_state = static_cast<std::int64_t>(2.0 * literal.t_align_max);
+  EXPECT_EQ(fire(stuck, r3, literal), "#13b");
+}
+
 TEST(PfTable, Row13WaitsWhileAHiddenReferenceIsLookedFor) {  // R: seek_hidden_reference (default)
   const Params p;
   // the parent, last seen 70 cm ahead, is out of view; the child is in view
