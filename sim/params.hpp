@@ -83,6 +83,7 @@ struct Params {
   double t_guide_lost = 30;         ///< ticks without a guide in view before a follower explores alone
   bool backoff_spot =
       false;  ///< forming: back off to the spot d_sub from the target toward the nest (else along the trail)
+  bool share_goal = true;  ///< TA: the founder's ACK carries where it saw the goal (relative to the nest)
   bool seek_hidden_reference = true;  ///< aligning: a reference out of view at the start is looked for first
   bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
 };

@@ -18,6 +18,12 @@ RabPayload encode(const TaMessage& m) {
   p[7] = static_cast<std::uint8_t>(m.remaining & 0xff);
   p[8] = static_cast<std::uint8_t>(m.t_founder_ds >> 8);
   p[9] = static_cast<std::uint8_t>(m.t_founder_ds & 0xff);
+  const auto gx = static_cast<std::uint16_t>(m.goal_x_cm);
+  const auto gy = static_cast<std::uint16_t>(m.goal_y_cm);
+  p[10] = static_cast<std::uint8_t>(gx >> 8);
+  p[11] = static_cast<std::uint8_t>(gx & 0xff);
+  p[12] = static_cast<std::uint8_t>(gy >> 8);
+  p[13] = static_cast<std::uint8_t>(gy & 0xff);
   return p;
 }
 
@@ -31,6 +37,8 @@ TaMessage decode(const RabPayload& p) {
   m.dest = p[5];
   m.remaining = static_cast<std::uint16_t>((p[6] << 8) | p[7]);
   m.t_founder_ds = static_cast<std::uint16_t>((p[8] << 8) | p[9]);
+  m.goal_x_cm = static_cast<std::int16_t>(static_cast<std::uint16_t>((p[10] << 8) | p[11]));
+  m.goal_y_cm = static_cast<std::int16_t>(static_cast<std::uint16_t>((p[12] << 8) | p[13]));
   return m;
 }
 
@@ -96,6 +104,9 @@ DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox
     if (m.type == MsgType::kAck && m.dest == my_id) {
       out.decision = DmDecision::kGo;
       out.t_founder_ds = m.t_founder_ds;
+      out.has_goal = m.has_goal();
+      out.goal_x_cm = m.goal_x_cm;
+      out.goal_y_cm = m.goal_y_cm;
       return out;
     }
     if (m.type == MsgType::kDone || m.alloc_done()) done = true;

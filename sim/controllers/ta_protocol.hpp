@@ -18,10 +18,12 @@ enum class MsgType : std::uint8_t { kNone = 0, kRequest = 1, kJoin = 2, kAck = 3
 
 inline constexpr std::uint8_t kBroadcastId = 255;  ///< destination "all" / parent "none"
 inline constexpr std::uint8_t kFlagAllocDone = 1;  ///< flags bit 0: the allocation is over
+inline constexpr std::uint8_t kFlagGoal = 2;       ///< flags bit 1: bytes 10-13 hold the goal [R]
 inline constexpr int kMaxTaRobots = 254;           ///< ids travel in one byte
 
 /// SPEC §2.6 framing of the 10-byte payload: 0 id; 1 state; 2 parent id (255 none); 3 flags
-/// (bit 0 ALLOC_DONE); 4 message type; 5 destination id (255 all); 6-7 remaining; 8-9 t_founder/10.
+/// (bit 0 ALLOC_DONE); 4 message type; 5 destination id (255 all); 6-7 remaining; 8-9 t_founder/10;
+/// and [R] 10-13 the founder's goal sighting relative to the nest (x, y in cm, signed; flags bit 1).
 struct TaMessage {
   std::uint8_t id = 0;
   std::uint8_t state = 0;
@@ -31,8 +33,12 @@ struct TaMessage {
   std::uint8_t dest = kBroadcastId;
   std::uint16_t remaining = 0;
   std::uint16_t t_founder_ds = 0;  ///< the founder's t [s] (its t in ticks / 10, SPEC "t_founder/10")
+  std::int16_t goal_x_cm = 0;      ///< the goal sighting relative to the nest [cm] (with kFlagGoal)
+  std::int16_t goal_y_cm = 0;
 
   bool alloc_done() const { return (flags & kFlagAllocDone) != 0; }
+
+  bool has_goal() const { return (flags & kFlagGoal) != 0; }
 };
 
 RabPayload encode(const TaMessage& m);
@@ -69,6 +75,9 @@ struct DmTick {
   DmDecision decision = DmDecision::kWait;
   TaMessage send;                  ///< JOIN when a founder is requesting
   std::uint16_t t_founder_ds = 0;  ///< the founder's t, when heard
+  bool has_goal = false;           ///< the ACK carried the founder's goal sighting
+  std::int16_t goal_x_cm = 0;      ///< ... relative to the nest [cm]
+  std::int16_t goal_y_cm = 0;
 };
 
 /// One decision-maker tick: an ACK addressed to it -> go (INITIATE_TASK); DONE or ALLOC_DONE

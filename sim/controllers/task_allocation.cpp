@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "task_allocation.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -130,6 +131,13 @@ void founder_initiates(const TaContext& c, RobotMemory& mem) {
 void dm_initiates(const TaContext& c, RobotMemory& mem) {
   start_path_formation(c, mem, static_cast<double>(c.sight.dm.t_founder_ds));
   mem.pf.follow_guide = c.p.guided_departure;
+  if (c.p.share_goal && c.sight.dm.has_goal) {
+    // R: where the founder saw the goal, relative to the nest: travel there once the guide is lost
+    mem.pf.sighting = mem.nest + 0.01 * Vec2{static_cast<double>(c.sight.dm.goal_x_cm),
+                                             static_cast<double>(c.sight.dm.goal_y_cm)};
+    mem.pf.has_sighting = true;
+    mem.pf.to_sighting = c.p.site_fidelity;
+  }
 }
 
 // clang-format off
@@ -254,7 +262,13 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
         m.waited = m.protocol.remaining > 0 && !joined(id, in.rab) ? m.waited + 1 : 0;
         if (static_cast<double>(m.waited) >= p.t_dm_wait) m.protocol.remaining = 0;
         const auto t = static_cast<std::uint16_t>(std::min(65535.0, std::round(m.t_founder_s)));
-        const TaMessage msg = founder_tick(m.protocol, id, t, in.rab);
+        TaMessage msg = founder_tick(m.protocol, id, t, in.rab);
+        if (p.share_goal && mem.pf.has_sighting) {  // R: the ACK tells where the goal was seen
+          const Vec2 rel = 100.0 * (mem.pf.sighting - mem.nest);
+          msg.flags = static_cast<std::uint8_t>(msg.flags | kFlagGoal);
+          msg.goal_x_cm = static_cast<std::int16_t>(std::clamp(std::round(rel.x), -32767.0, 32767.0));
+          msg.goal_y_cm = static_cast<std::int16_t>(std::clamp(std::round(rel.y), -32767.0, 32767.0));
+        }
         if (msg.type == MsgType::kDone && m.protocol.done_ticks == 1) {
           m.alloc_done_tick = in.tick;
           m.allocated = m.protocol.acks + (p.founder_counts_self ? 1 : 0);

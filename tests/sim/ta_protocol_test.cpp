@@ -13,19 +13,21 @@
 namespace swarmpath::sim {
 namespace {
 
-TEST(TaFraming, EveryFieldSurvivesTheTenBytes) {
+TEST(TaFraming, EveryFieldSurvivesTheFourteenBytes) {
   TaMessage m;
   m.id = 17;
   m.state = 3;
   m.parent = 42;
-  m.flags = kFlagAllocDone;
+  m.flags = kFlagAllocDone | kFlagGoal;
   m.type = MsgType::kAck;
   m.dest = 99;
   m.remaining = 0x1234;
   m.t_founder_ds = 0xbeef;
+  m.goal_x_cm = -1350;  // R: the goal sighting relative to the nest, signed cm
+  m.goal_y_cm = 275;
   const RabPayload p = encode(m);
-  EXPECT_EQ(p.size(), 10u);
-  EXPECT_EQ(p[4], 3);  // SPEC: byte 4 is the message type
+  EXPECT_EQ(p.size(), 14u);  // SPEC's 10 bytes + 4 [R]
+  EXPECT_EQ(p[4], 3);        // SPEC: byte 4 is the message type
   EXPECT_EQ(p[5], 99);
   const TaMessage back = decode(p);
   EXPECT_EQ(back.id, 17);
@@ -36,6 +38,9 @@ TEST(TaFraming, EveryFieldSurvivesTheTenBytes) {
   EXPECT_EQ(back.dest, 99);
   EXPECT_EQ(back.remaining, 0x1234);
   EXPECT_EQ(back.t_founder_ds, 0xbeef);
+  EXPECT_TRUE(back.has_goal());
+  EXPECT_EQ(back.goal_x_cm, -1350);
+  EXPECT_EQ(back.goal_y_cm, 275);
 }
 
 TEST(TaFraming, AnUnknownTypeDecodesAsNone) {
@@ -196,6 +201,27 @@ TEST(TaProtocol, DuplicateFoundersDeferToTheSmallerId) {
   const DmTick d = decision_maker_tick(20, inbox);
   EXPECT_EQ(d.send.type, MsgType::kJoin);
   EXPECT_EQ(d.send.dest, 4);
+}
+
+TEST(TaProtocol, AnAckedDecisionMakerLearnsWhereTheGoalWasSeen) {  // R: share_goal
+  TaMessage ack;
+  ack.id = 3;
+  ack.type = MsgType::kAck;
+  ack.dest = 12;
+  ack.t_founder_ds = 100;
+  std::vector<RabMessage> inbox(1);
+  inbox[0].data = encode(ack);
+  EXPECT_FALSE(decision_maker_tick(12, inbox).has_goal);  // a founder that does not share it
+  ack.flags = kFlagGoal;
+  ack.goal_x_cm = 1300;
+  ack.goal_y_cm = -40;
+  inbox[0].data = encode(ack);
+  const DmTick d = decision_maker_tick(12, inbox);
+  EXPECT_EQ(d.decision, DmDecision::kGo);
+  EXPECT_TRUE(d.has_goal);
+  EXPECT_EQ(d.goal_x_cm, 1300);
+  EXPECT_EQ(d.goal_y_cm, -40);
+  EXPECT_FALSE(decision_maker_tick(13, inbox).has_goal);  // addressed to another robot
 }
 
 TEST(TaProtocol, AllocDoneFlagSendsADecisionMakerToRest) {
