@@ -508,11 +508,9 @@ Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
   Vec2 v = (1.0 / len) * target;
   // R_keep bounds the robot itself, not only P: pushed past it, go back toward that reference
   // (not on the way back to where the alignment began: both were in view there)
-  if (m.view_limited) {
-    // the way back is the target
-  } else if (norm(a) > p.r_keep) {
+  if (!m.view_limited && norm(a) > p.r_keep) {
     v = (1.0 / norm(a)) * a;
-  } else if (norm(b) > p.r_keep) {
+  } else if (!m.view_limited && norm(b) > p.r_keep) {
     v = (1.0 / norm(b)) * b;
   }
   if (avoid.collision) v += avoid.direction;  // avoidance at the same (slow) speed as the pull

@@ -68,7 +68,7 @@ struct PfMemory {
   Tracked child;                 ///< nest-side reference (the nest beacon or a robot)
   Vec2 safe_pos;                 ///< aligning: where the alignment began, both references in view [m]
   bool view_limited = false;     ///< aligning: a reference went out of view; back to safe_pos
-  bool seek_ref = false;         ///< aligning: began with a reference out of view; first toward it
+  bool seek_ref = false;         ///< aligning: looking for a reference still out of view at safe_pos
   Vec2 sighting;                 ///< where the goal or a RED subgoal was last seen [m]
   bool has_sighting = false;
   bool sighted_this_trip = false;

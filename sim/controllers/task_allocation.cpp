@@ -263,7 +263,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
         if (static_cast<double>(m.waited) >= p.t_dm_wait) m.protocol.remaining = 0;
         const auto t = static_cast<std::uint16_t>(std::min(65535.0, std::round(m.t_founder_s)));
         TaMessage msg = founder_tick(m.protocol, id, t, in.rab);
-        if (p.share_goal && mem.pf.has_sighting) {  // R: the ACK tells where the goal was seen
+        if (p.share_goal && mem.pf.has_sighting) {  // R: its messages (the ACK) tell where it saw the goal
           const Vec2 rel = 100.0 * (mem.pf.sighting - mem.nest);
           msg.flags = static_cast<std::uint8_t>(msg.flags | kFlagGoal);
           msg.goal_x_cm = static_cast<std::int16_t>(std::clamp(std::round(rel.x), -32767.0, 32767.0));
