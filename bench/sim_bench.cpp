@@ -8,6 +8,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_scenarios.hpp"
+#include "sim/params.hpp"
 #include "sim/step.hpp"
 
 namespace swarmpath::bench {
@@ -50,12 +51,12 @@ void BM_Env4Tiled(benchmark::State& state) { run_ticks(state, env4_tiled(static_
 BENCHMARK(BM_Env4Tiled)->Arg(1)->Arg(3)->Arg(10)->Iterations(400)->Unit(benchmark::kMillisecond);
 
 // path formation, 100 robots in env4, from deployment to path completion (seed 3), with the
-// robots at v_max = state.range(0) cm/s (10: SPEC's assumption, as genomes/paper-v10.toml; 20: the default)
+// robots at state.range(0) cm/s: 10 = genomes/paper-v10.toml (SPEC's assumption), 20 = the default
 void BM_PathFormationEnv4ToCompletion(benchmark::State& state) {
   const sim::Scenario s = env4();
-  sim::Params p;
-  p.v_max = static_cast<double>(state.range(0));
-  if (state.range(0) == 10) p.backoff_far_spot = false;  // as genomes/paper-v10.toml
+  const sim::Params p = state.range(0) == 10
+                            ? sim::load_params(std::string(SWARMPATH_SOURCE_DIR) + "/genomes/paper-v10.toml")
+                            : sim::Params{};
   sim::Metrics m;
   for (auto _ : state) {
     m = sim::evaluate(p, s, sim::Mode::kPathFormation, 3);
