@@ -237,12 +237,19 @@ bool parent_done_or_last_subgoal(const PfContext& c) {  // row 11, label h
   return c.m.parent.id == kGoalEmitter || (c.m.parent.visible && c.m.parent.color == Led::kBrown);
 }
 
+// R (seek_hidden_reference): the one reference out of view (`debounced`: lost, else not seen this
+// tick) while T_align_max is not spent, or nullptr (both in view, or both out of it)
+const Tracked* hidden_reference(const PfMemory& m, const Params& p, bool debounced) {
+  if (!p.seek_hidden_reference || static_cast<double>(m.t_state) >= p.t_align_max) return nullptr;
+  const bool parent_out = debounced ? lost(m.parent, p) : !m.parent.visible;
+  const bool child_out = debounced ? lost(m.child, p) : !m.child.visible;
+  if (parent_out == child_out) return nullptr;
+  return parent_out ? &m.parent : &m.child;
+}
+
 bool seeking_reference(const PfContext& c) {  // R: one reference out of view, looked for (align())
-  if (!c.p.seek_hidden_reference || static_cast<double>(c.m.t_state) >= c.p.t_align_max) return false;
-  const bool parent_lost = lost(c.m.parent, c.p);
-  if (parent_lost == lost(c.m.child, c.p)) return false;  // both in view, or both lost
-  const Tracked& hidden = parent_lost ? c.m.parent : c.m.child;
-  return dist(c.in.pose.p, hidden.last_seen) / kCm > c.p.d_detect;  // not where it was last seen
+  const Tracked* hidden = hidden_reference(c.m, c.p, true);
+  return hidden != nullptr && dist(c.in.pose.p, hidden->last_seen) / kCm > c.p.d_detect;  // not there yet
 }
 
 bool reference_lost(const PfContext& c) {  // row 13, label f
@@ -489,11 +496,10 @@ Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
   }
   // still out of view from there (a subgoal's parent just behind an obstacle's corner): drive
   // toward where it was last seen until both are in view, and stop there (R)
-  const bool one_hidden = m.parent.visible != m.child.visible;
-  if (p.seek_hidden_reference && m.view_limited && one_hidden &&
-      static_cast<double>(m.t_state) < p.t_align_max && (m.seek_ref || back_at_safe_pos(in.pose, m, p))) {
+  const Tracked* hidden = hidden_reference(m, p, false);
+  if (hidden != nullptr && m.view_limited && (m.seek_ref || back_at_safe_pos(in.pose, m, p))) {
     m.seek_ref = true;
-    return look_for(in, p, mem, m.parent.visible ? b : a, s);
+    return look_for(in, p, mem, local_cm(in.pose, *hidden), s);
   }
   if (m.seek_ref && m.parent.visible && m.child.visible) {
     m.seek_ref = false;
