@@ -40,7 +40,7 @@ SensorNeeds sensor_needs(Mode m) {
 bool robot_listens(Mode m, const RobotMemory& mem) {
   if (m != Mode::kTaskAllocation) return true;  // the world's needs.rab decides
   return mem.ta.state == TaState::kScout || mem.ta.state == TaState::kGoalFounder ||
-         mem.ta.state == TaState::kDecisionMaker;
+         mem.ta.state == TaState::kDecisionMaker || mem.pf.single_child;
 }
 
 Led initial_led(Mode m) {

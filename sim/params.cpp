@@ -79,6 +79,7 @@ const std::array kTable{
   ParamInfo{ 0, "T_guide_lost", R, &P::t_guide_lost, 30, 10, 1000, 10, "", "ticks", "ticks without a guide in view before a follower explores on its own", {}},
   ParamInfo{ 0, "backoff_spot",   B, &P::backoff_spot,   0,    0,    1,     1,    "",    "",      "a forming robot backs off to the spot d_sub from its target toward the nest (false: along its own way from the nest)", {}},
   ParamInfo{ 0, "share_goal", B, &P::share_goal, 1, 0, 1, 1, "", "", "task allocation: the founder's ACK carries where it saw the goal (relative to the nest); an allocated robot that loses its guide travels there", {}},
+  ParamInfo{ 0, "single_child", B, &P::single_child, 0, 0, 1, 1, "", "", "task allocation: an allocated explorer attaches only to a goal or RED subgoal that no robot in view claims (a WHITE robot forming from it, or a path robot advertising it as its parent); claimed ones do not lure it", {}},
   ParamInfo{ 0, "seek_hidden_reference", B, &P::seek_hidden_reference, 1, 0, 1, 1, "", "", "a robot that begins an alignment with a reference out of view (behind an obstacle's corner) first drives toward where it last saw it, instead of turning RECOVERY", {}},
   ParamInfo{ 0, "backoff_far_spot", B, &P::backoff_far_spot, 1, 0, 1,     1,    "",    "",      "a forming robot that found the goal from its far side (farther from the nest than the goal) backs off to the spot, not along its own way", {}},
 };

@@ -86,6 +86,7 @@ struct Params {
   bool share_goal = true;  ///< TA: the founder's ACK carries where it saw the goal (relative to the nest)
   bool seek_hidden_reference = true;  ///< aligning: a reference out of view at the start is looked for first
   bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
+  bool single_child = false;     ///< TA: allocated explorers attach only to an unclaimed goal or subgoal [R]
 };
 
 enum class ParamType : std::uint8_t { kReal, kInteger, kBool, kChoice };

@@ -8,6 +8,7 @@
 #include "navigation.hpp"
 #include "sim/controller.hpp"
 #include "sim/motion.hpp"
+#include "ta_protocol.hpp"
 
 namespace swarmpath::sim {
 
@@ -82,6 +83,20 @@ bool is_path_colour(Led c) {
          c == Led::kOrange;
 }
 
+// single_child [R]: some robot claims `emitter` (the goal or a subgoal): a WHITE robot forming
+// from it, or a chain robot advertising it as its parent, seen (vision + ID tags) or heard on the
+// range-and-bearing medium (3 m, past the camera's R_vis)
+bool claimed(const Percept& in, int emitter) {
+  for (const Blob& b : in.blobs) {
+    if (b.emitter < 0 || b.tag != emitter) continue;
+    if (b.color == Led::kRed || (is_path_colour(b.color) && b.color != Led::kOrange)) return true;
+  }
+  for (const RabMessage& r : in.rab) {
+    if (claimed_emitter(decode(r.data)) == emitter) return true;
+  }
+  return false;
+}
+
 // colours a reference may show, for vision-only tracking
 bool allowed_for(const Tracked& t, Led c, bool nest_side) {
   if (t.id == kGoalEmitter) return c == Led::kYellow;
@@ -149,14 +164,18 @@ bool back_at_safe_pos(const Pose& pose, const PfMemory& m, const Params& p) {
 
 // ---- guards, named after the paper's conditions ----
 
+// the goal beacon within d_detect, and (single_child) no robot in view claims it
+bool goal_in_reach(const PfContext& c) {
+  return c.sight.goal != nullptr && c.sight.goal->distance_cm <= c.p.d_detect && !c.sight.goal_claimed;
+}
+
 bool found_goal_or_subgoal(const PfContext& c) {  // row 1, label c
   if (c.m.scout) return false;  // a TA scout that finds the goal becomes the founder instead
   // one at a time [R]: while another robot in view is forming, wait for it to become the tip
   if (c.p.form_one_at_a_time && c.sight.forming_in_view) return false;
   // ... and robots waiting for one do not all start in the same tick (p_form per tick)
   if (c.p.form_one_at_a_time && !c.sight.may_form) return false;
-  return (c.sight.goal != nullptr && c.sight.goal->distance_cm <= c.p.d_detect) ||
-         c.sight.red_near != nullptr;
+  return goal_in_reach(c) || c.sight.red_near != nullptr;
 }
 
 bool exploration_time_over(const PfContext& c) {  // row 2, label b (or blocked for good)
@@ -270,7 +289,7 @@ bool orphaned(const PfContext& c) {  // row 14 option: revert_orphans
 // ---- actions ----
 
 void take_target(const PfContext& c, PfMemory& m) {  // row 1: the goal if in range, else the red subgoal
-  const bool goal = c.sight.goal != nullptr && c.sight.goal->distance_cm <= c.p.d_detect;
+  const bool goal = goal_in_reach(c);
   m.target = follow(goal ? *c.sight.goal : *c.sight.red_near, c.in.pose);
   m.target_reached = true;  // found within d_detect
   // found the goal from its far side: its own way from the nest leads round the goal (R)
@@ -529,6 +548,7 @@ std::span<const PfTransition> pf_transitions() { return kTable; }
 
 void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfSight& sight) {
   sight = PfSight{};
+  const bool claims = m.single_child;
   sight.nest_distance_cm = dist(in.pose.p, nest) / kCm;
   double red_best = p.d_detect;
   double lure_best = p.r_vis + 1.0;
@@ -549,19 +569,23 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
     }
     if (b.emitter == kGoalEmitter) {
       sight.goal = &b;
-      sight.lure = &b;
-      lure_best = -1.0;  // the goal beats any subgoal
+      sight.goal_claimed = claims && claimed(in, kGoalEmitter);
+      if (!sight.goal_claimed) {
+        sight.lure = &b;
+        lure_best = -1.0;  // the goal beats any subgoal
+      }
       continue;
     }
     if (b.emitter == kNestEmitter) {
       sight.nest = &b;
       continue;
     }
-    if (b.color == Led::kRed && b.distance_cm <= red_best) {
+    const bool free_red = b.color == Led::kRed && !(claims && claimed(in, b.emitter));
+    if (free_red && b.distance_cm <= red_best) {
       red_best = b.distance_cm;
       sight.red_near = &b;
     }
-    if (b.color == Led::kRed && b.distance_cm < lure_best) {
+    if (free_red && b.distance_cm < lure_best) {
       lure_best = b.distance_cm;
       sight.lure = &b;
     }
@@ -622,6 +646,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
     double best = dist(m.target.last_seen, nest) - kMargin;
     for (const Blob& b : in.blobs) {
       if (b.color != Led::kRed || b.emitter == m.target.id) continue;
+      if (claims && claimed(in, b.emitter)) continue;
       const double to_nest = dist(blob_position(in.pose, b), nest);
       if (to_nest < best) {
         best = to_nest;
@@ -705,6 +730,15 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   // vision + ID: the light also carries the robot's parent (SPEC §2.1), so that a subgoal can
   // tell which sub-nest is its own (row 9b)
   cmd.tag = m.parent.valid() ? m.parent.id : kNobody;
+  // ... and a forming robot's light, its target: the target is claimed (single_child)
+  if (m.state == PfState::kSubgoalForming && m.target.valid()) cmd.tag = m.target.id;
+  // single_child: the claim also goes on the medium, which reaches past the camera's range
+  const bool chained = m.state != PfState::kExploring && m.state != PfState::kReturnToNest &&
+                       m.state != PfState::kResting && m.state != PfState::kRecovery;
+  if (m.single_child && chained && cmd.tag != kNobody) {
+    cmd.rab_send = true;
+    cmd.rab = encode(claim_message(static_cast<std::uint8_t>(in.id), cmd.tag));
+  }
   // guided departure: a guide's light carries its hop count to the founder instead
   if (cmd.led == Led::kCyan) cmd.tag = m.guide ? 0 : m.guide_hops;
   return cmd;

@@ -55,6 +55,7 @@ inline constexpr int kMaxGuideHops = 30;
 struct PfMemory {
   PfState state = PfState::kExploring;
   bool scout = false;            ///< task allocation's scout: explores, but row 1 is the TA's (founder)
+  bool single_child = false;     ///< TA, allocated with single_child: claims and respects claims [R]
   std::int64_t t_state = 0;      ///< ticks in the current state
   double t_explore = 1000;       ///< T_explore, the exploration budget [ticks]
   std::int64_t nest_ticks = 0;   ///< consecutive ticks within R_nest_reach while returning (row 3)
@@ -94,9 +95,10 @@ struct PfSight {
   const Blob* guide = nullptr;       ///< follower: the CYAN robot in view fewest hops from the founder
   bool recovery_near = false;        ///< an ORANGE robot within r_rec
   bool forming_in_view = false;      ///< a WHITE (subgoal-forming) robot within R_vis
-  bool may_form = true;              ///< this tick's draw of p_form (one at a time)
-  Vec2 repulsion;                    ///< R (SPEC §2.1), robot frame
-  double nest_distance_cm = 0;       ///< from the positioning sensor
+  bool goal_claimed = false;    ///< single_child: a robot in view forms from the goal or has it as parent
+  bool may_form = true;         ///< this tick's draw of p_form (one at a time)
+  Vec2 repulsion;               ///< R (SPEC §2.1), robot frame
+  double nest_distance_cm = 0;  ///< from the positioning sensor
 };
 
 /// Everything a guard or an action may read.

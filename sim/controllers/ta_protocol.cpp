@@ -103,17 +103,11 @@ DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox
     const TaMessage m = decode(r.data);
     if (m.type == MsgType::kAck && m.dest == my_id) {
       out.decision = DmDecision::kGo;
-      out.t_founder_ds = m.t_founder_ds;
-      out.has_goal = m.has_goal();
-      out.goal_x_cm = m.goal_x_cm;
-      out.goal_y_cm = m.goal_y_cm;
+      out.ack = m;
       return out;
     }
     if (m.type == MsgType::kDone || m.alloc_done()) done = true;
-    if ((m.type == MsgType::kRequest || m.type == MsgType::kAck) && m.id < founder) {
-      founder = m.id;
-      out.t_founder_ds = m.t_founder_ds;
-    }
+    if ((m.type == MsgType::kRequest || m.type == MsgType::kAck) && m.id < founder) founder = m.id;
   }
   if (done) {
     out.decision = DmDecision::kRest;
@@ -125,6 +119,19 @@ DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox
     out.send.dest = founder;
   }
   return out;
+}
+
+TaMessage claim_message(std::uint8_t my_id, int emitter) {
+  TaMessage m;
+  m.id = my_id;
+  m.state = kClaimState;
+  m.parent = emitter == kGoalEmitter ? kGoalRabId : static_cast<std::uint8_t>(emitter);
+  return m;
+}
+
+int claimed_emitter(const TaMessage& m) {
+  if (m.state != kClaimState || m.type != MsgType::kNone || m.parent == kBroadcastId) return kNobody;
+  return m.parent == kGoalRabId ? kGoalEmitter : static_cast<int>(m.parent);
 }
 
 int robots_needed(double t_seconds, double speed_cm_s, double r_vis_cm, double delta, int n_min, int swarm) {

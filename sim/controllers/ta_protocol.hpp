@@ -73,17 +73,23 @@ enum class DmDecision : std::uint8_t { kWait, kGo, kRest };
 
 struct DmTick {
   DmDecision decision = DmDecision::kWait;
-  TaMessage send;                  ///< JOIN when a founder is requesting
-  std::uint16_t t_founder_ds = 0;  ///< the founder's t, when heard
-  bool has_goal = false;           ///< the ACK carried the founder's goal sighting
-  std::int16_t goal_x_cm = 0;      ///< ... relative to the nest [cm]
-  std::int16_t goal_y_cm = 0;
+  TaMessage send;  ///< JOIN when a founder is requesting
+  TaMessage ack;   ///< the ACK addressed to this robot (its t_founder, goal sighting), with kGo
 };
 
 /// One decision-maker tick: an ACK addressed to it -> go (INITIATE_TASK); DONE or ALLOC_DONE
 /// heard -> rest; a founder requesting (REQUEST, or ACKs to others) -> JOIN the founder with the
 /// smallest id.
 DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox);
+
+/// single_child [R]: an allocated robot forming from, or chained to, `emitter` (a robot id or
+/// kGoalEmitter) says so on the medium: parent byte = the robot's id, or kGoalRabId for the goal.
+inline constexpr std::uint8_t kGoalRabId = 254;
+inline constexpr std::uint8_t kClaimState = 3;  ///< state byte of a claim: TaState::kPathFormation
+TaMessage claim_message(std::uint8_t my_id, int emitter);
+
+/// The emitter a message claims (claim_message), or kNobody.
+int claimed_emitter(const TaMessage& m);
 
 /// The founder that wins among duplicates: a REQUEST (or ACK) heard from a founder with a smaller
 /// id than `my_id` (SPEC §2.6 T8); returns that id or kBroadcastId.

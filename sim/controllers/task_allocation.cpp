@@ -119,6 +119,7 @@ void start_path_formation(const TaContext& c, RobotMemory& mem, double t_founder
   mem.pf.sighting = keep.sighting;
   mem.pf.has_sighting = keep.has_sighting;
   mem.pf.to_sighting = c.p.site_fidelity && keep.has_sighting;
+  mem.pf.single_child = c.p.single_child;
   mem.trail.reset(c.in.pose.p);
 }
 
@@ -129,12 +130,13 @@ void founder_initiates(const TaContext& c, RobotMemory& mem) {
 }
 
 void dm_initiates(const TaContext& c, RobotMemory& mem) {
-  start_path_formation(c, mem, static_cast<double>(c.sight.dm.t_founder_ds));
+  const TaMessage& ack = c.sight.dm.ack;
+  start_path_formation(c, mem, static_cast<double>(ack.t_founder_ds));
   mem.pf.follow_guide = c.p.guided_departure;
-  if (c.p.share_goal && c.sight.dm.has_goal) {
+  if (c.p.share_goal && ack.has_goal()) {
     // R: where the founder saw the goal, relative to the nest: travel there once the guide is lost
-    mem.pf.sighting = mem.nest + 0.01 * Vec2{static_cast<double>(c.sight.dm.goal_x_cm),
-                                             static_cast<double>(c.sight.dm.goal_y_cm)};
+    mem.pf.sighting =
+        mem.nest + 0.01 * Vec2{static_cast<double>(ack.goal_x_cm), static_cast<double>(ack.goal_y_cm)};
     mem.pf.has_sighting = true;
     mem.pf.to_sighting = c.p.site_fidelity;
   }

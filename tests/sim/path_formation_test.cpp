@@ -11,6 +11,7 @@
 
 #include "sim/controller.hpp"
 #include "sim/controllers/alignment.hpp"
+#include "sim/controllers/ta_protocol.hpp"
 
 namespace swarmpath::sim {
 namespace {
@@ -21,6 +22,7 @@ constexpr int kMe = 3;
 // the robot at the origin facing +x; blobs are given in the robot frame
 struct Reading {
   std::vector<Blob> blobs;
+  std::vector<RabMessage> rab;
   Vec2 at{0.0, 0.0};
   std::int64_t tick = 100;
 
@@ -35,6 +37,7 @@ struct Reading {
     in.id = kMe;
     in.pose = {at, 1.0, 0.0};
     in.blobs = blobs;
+    in.rab = rab;
     return in;
   }
 };
@@ -85,6 +88,33 @@ TEST(PfTable, Row1FindsARedSubgoal) {
   Reading out;
   out.add(Led::kRed, 7, 45, 35);  // 35 cm > d_detect = 30
   EXPECT_EQ(fire(far, out), "");
+}
+
+// R: single_child (task allocation): an allocated explorer attaches only to what no robot claims
+TEST(PfTable, Row1SingleChildSkipsAClaimedGoalOrSubgoal) {
+  PfMemory m = in_state(PfState::kExploring);
+  m.single_child = true;
+  Reading r;
+  r.add(Led::kYellow, kGoalEmitter, 10, 25);
+  r.add(Led::kWhite, 9, 180, 60, kGoalEmitter);  // robot 9 forms from the goal: claimed by sight
+  r.add(Led::kRed, 7, -20, 20);
+  r.add(Led::kRed, 8, 90, 90, 7);  // robot 8 is chained to 7: claimed by sight
+  EXPECT_EQ(fire(m, r), "");
+  // seen without its claimants, the subgoal claimed on the medium only (3 m, past the camera)
+  Reading heard;
+  heard.add(Led::kRed, 7, -20, 20);
+  RabMessage msg;
+  msg.sender = 8;
+  msg.data = encode(claim_message(8, 7));
+  heard.rab.push_back(msg);
+  EXPECT_EQ(fire(m, heard), "");
+  heard.rab.clear();
+  EXPECT_EQ(fire(m, heard), "#1");  // unclaimed: attaches
+  EXPECT_EQ(m.target.id, 7);
+  // without single_child the claims do not matter (SPEC row 1)
+  PfMemory plain = in_state(PfState::kExploring);
+  EXPECT_EQ(fire(plain, r), "#1");
+  EXPECT_EQ(plain.target.id, kGoalEmitter);
 }
 
 TEST(PfTable, Row2ExplorationBudgetSpent) {  // label b

@@ -211,17 +211,17 @@ TEST(TaProtocol, AnAckedDecisionMakerLearnsWhereTheGoalWasSeen) {  // R: share_g
   ack.t_founder_ds = 100;
   std::vector<RabMessage> inbox(1);
   inbox[0].data = encode(ack);
-  EXPECT_FALSE(decision_maker_tick(12, inbox).has_goal);  // a founder that does not share it
+  EXPECT_FALSE(decision_maker_tick(12, inbox).ack.has_goal());  // a founder that does not share it
   ack.flags = kFlagGoal;
   ack.goal_x_cm = 1300;
   ack.goal_y_cm = -40;
   inbox[0].data = encode(ack);
   const DmTick d = decision_maker_tick(12, inbox);
   EXPECT_EQ(d.decision, DmDecision::kGo);
-  EXPECT_TRUE(d.has_goal);
-  EXPECT_EQ(d.goal_x_cm, 1300);
-  EXPECT_EQ(d.goal_y_cm, -40);
-  EXPECT_FALSE(decision_maker_tick(13, inbox).has_goal);  // addressed to another robot
+  EXPECT_TRUE(d.ack.has_goal());
+  EXPECT_EQ(d.ack.goal_x_cm, 1300);
+  EXPECT_EQ(d.ack.goal_y_cm, -40);
+  EXPECT_FALSE(decision_maker_tick(13, inbox).ack.has_goal());  // addressed to another robot
 }
 
 TEST(TaProtocol, AllocDoneFlagSendsADecisionMakerToRest) {
@@ -231,6 +231,23 @@ TEST(TaProtocol, AllocDoneFlagSendsADecisionMakerToRest) {
   std::vector<RabMessage> inbox(1);
   inbox[0].data = encode(resting);
   EXPECT_EQ(decision_maker_tick(5, inbox).decision, DmDecision::kRest);
+}
+
+TEST(TaProtocol, AClaimNamesTheGoalOrTheSubgoal) {  // R: single_child
+  EXPECT_EQ(claimed_emitter(decode(encode(claim_message(5, 17)))), 17);
+  EXPECT_EQ(claimed_emitter(decode(encode(claim_message(5, kGoalEmitter)))), kGoalEmitter);
+  EXPECT_EQ(claimed_emitter(decode(encode(claim_message(5, 0)))), 0);
+  // the protocol's own messages claim nothing
+  TaMessage req;
+  req.id = 4;
+  req.type = MsgType::kRequest;
+  req.parent = 17;
+  EXPECT_EQ(claimed_emitter(decode(encode(req))), kNobody);
+  TaMessage resting;
+  resting.id = 4;
+  resting.state = 4;
+  resting.flags = kFlagAllocDone;
+  EXPECT_EQ(claimed_emitter(decode(encode(resting))), kNobody);
 }
 
 }  // namespace
