@@ -83,18 +83,32 @@ bool is_path_colour(Led c) {
          c == Led::kOrange;
 }
 
-// single_child [R]: some robot claims `emitter` (the goal or a subgoal): a WHITE robot forming
-// from it, or a chain robot advertising it as its parent, seen (vision + ID tags) or heard on the
-// range-and-bearing medium (3 m, past the camera's R_vis)
-bool claimed(const Percept& in, int emitter) {
+// single_child [R]: what robots claim, the goal or a subgoal: a WHITE robot forming from it, or
+// a chain robot advertising it as its parent, seen (vision + ID tags) or heard on the
+// range-and-bearing medium (3 m, past the camera's R_vis). Gathered once per tick.
+struct Claims {
+  std::array<std::uint64_t, 4> robots{};  ///< bit per robot id (ids travel in one byte)
+  bool goal = false;
+
+  void add(int emitter) {
+    if (emitter == kGoalEmitter) goal = true;
+    if (emitter >= 0 && emitter < 256) robots[emitter / 64] |= std::uint64_t{1} << (emitter % 64);
+  }
+
+  bool has(int emitter) const {
+    if (emitter == kGoalEmitter) return goal;
+    return emitter >= 0 && emitter < 256 && ((robots[emitter / 64] >> (emitter % 64)) & 1u) != 0;
+  }
+};
+
+Claims gather_claims(const Percept& in) {
+  Claims c;
   for (const Blob& b : in.blobs) {
-    if (b.emitter < 0 || b.tag != emitter) continue;
-    if (b.color == Led::kRed || (is_path_colour(b.color) && b.color != Led::kOrange)) return true;
+    if (b.emitter < 0 || b.tag == kNobody) continue;
+    if (b.color == Led::kRed || (is_path_colour(b.color) && b.color != Led::kOrange)) c.add(b.tag);
   }
-  for (const RabMessage& r : in.rab) {
-    if (claimed_emitter(decode(r.data)) == emitter) return true;
-  }
-  return false;
+  for (const RabMessage& r : in.rab) c.add(claimed_emitter(decode(r.data)));
+  return c;
 }
 
 // colours a reference may show, for vision-only tracking
@@ -548,7 +562,8 @@ std::span<const PfTransition> pf_transitions() { return kTable; }
 
 void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfSight& sight) {
   sight = PfSight{};
-  const bool claims = m.single_child;
+  Claims claims;
+  if (m.single_child) claims = gather_claims(in);
   sight.nest_distance_cm = dist(in.pose.p, nest) / kCm;
   double red_best = p.d_detect;
   double lure_best = p.r_vis + 1.0;
@@ -569,7 +584,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
     }
     if (b.emitter == kGoalEmitter) {
       sight.goal = &b;
-      sight.goal_claimed = claims && claimed(in, kGoalEmitter);
+      sight.goal_claimed = claims.has(kGoalEmitter);
       if (!sight.goal_claimed) {
         sight.lure = &b;
         lure_best = -1.0;  // the goal beats any subgoal
@@ -580,7 +595,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
       sight.nest = &b;
       continue;
     }
-    const bool free_red = b.color == Led::kRed && !(claims && claimed(in, b.emitter));
+    const bool free_red = b.color == Led::kRed && !claims.has(b.emitter);
     if (free_red && b.distance_cm <= red_best) {
       red_best = b.distance_cm;
       sight.red_near = &b;
@@ -646,7 +661,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
     double best = dist(m.target.last_seen, nest) - kMargin;
     for (const Blob& b : in.blobs) {
       if (b.color != Led::kRed || b.emitter == m.target.id) continue;
-      if (claims && claimed(in, b.emitter)) continue;
+      if (claims.has(b.emitter)) continue;
       const double to_nest = dist(blob_position(in.pose, b), nest);
       if (to_nest < best) {
         best = to_nest;
