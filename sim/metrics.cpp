@@ -7,6 +7,8 @@ namespace swarmpath::sim {
 
 void MetricsAccumulator::begin(int robots) {
   robots_ = robots;
+  ever_allocated_.assign(static_cast<std::size_t>(robots), 0);
+  ever_allocated_count_ = 0;
   distance_m_ = 0;
   path_ = PathObserver{};
 }
@@ -15,12 +17,24 @@ void MetricsAccumulator::observe(const Scenario& s, const World& w) {
   if (w.mode != Mode::kPathFormation && w.mode != Mode::kTaskAllocation) return;
   watch_path_ = true;
   path_.observe(s, w);
-  if (w.mode != Mode::kTaskAllocation || alloc_tick_ >= 0) return;
-  // T_alloc: the first founder to broadcast DONE; its count (and itself, when it counts itself)
+  if (w.mode != Mode::kTaskAllocation) return;
+  // the robots allocated: every robot that has entered INITIATE_TASK so far, whichever founder
+  // (duplicate founders each allocate) and the founders themselves
+  for (std::size_t i = 0; i < w.memory.size() && i < ever_allocated_.size(); ++i) {
+    if (ever_allocated_[i] == 0 && w.memory[i].ta.state == TaState::kPathFormation) {
+      ever_allocated_[i] = 1;
+      ++ever_allocated_count_;
+    }
+  }
+  if (alloc_tick_ >= 0) {
+    allocated_ = ever_allocated_count_;
+    return;
+  }
+  // T_alloc: the first founder to broadcast DONE
   for (const RobotMemory& mem : w.memory) {
     if (mem.ta.alloc_done_tick == w.tick - 1) {
       alloc_tick_ = w.tick;
-      allocated_ = mem.ta.allocated;
+      allocated_ = ever_allocated_count_;
       break;
     }
   }

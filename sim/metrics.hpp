@@ -29,7 +29,7 @@ struct Metrics {
   int path_robots = 0;                                                       ///< robots in the final chain
 
   // task allocation (SPEC §4.1, §4.3)
-  int allocated = -1;  ///< robots allocated, the founder included when it counts itself
+  int allocated = -1;  ///< robots that entered INITIATE_TASK (all founders' allocations, founders included)
   double resource_reduction_pct = std::numeric_limits<double>::quiet_NaN();  ///< (N - allocated)/N x 100
   std::int64_t ticks_to_allocate = -1;               ///< T_alloc: DONE first broadcast
   PathSnapshot subgoal_path, opt1_path, final_path;  ///< for pictures
@@ -58,6 +58,8 @@ class MetricsAccumulator {
   PathObserver path_;
   int allocated_ = -1;
   std::int64_t alloc_tick_ = -1;
+  std::vector<std::uint8_t> ever_allocated_;  ///< per robot: has entered INITIATE_TASK
+  int ever_allocated_count_ = 0;
 };
 
 }  // namespace swarmpath::sim

@@ -255,6 +255,33 @@ TEST(TaRun, TheFounderAllocatesAndTheAllocatedRobotsFormThePath) {
   EXPECT_LE(m.path_robots, m.allocated);  // only allocated robots form it
 }
 
+// SPEC §4.3: N_alloc counts every robot that initiated the task. env1, 70 robots, seed 3 has four
+// founders; the first to finish its protocol allocated 1 robot, the others the rest of the swarm,
+// so the first founder's own count would report a resource reduction of 97 % for a run that used
+// all 70 robots.
+TEST(TaRun, AllocatedCountsTheRobotsOfEveryFounder) {
+  const Scenario s = with_robots(load_scenario(test::source_path("configs/scenarios/paper/env1.toml")), 70);
+  const Params p = load_params(test::source_path("genomes/paper.toml"));
+  std::vector<std::uint8_t> initiated(70, 0);
+  int founders = 0;
+  std::vector<std::uint8_t> founded(70, 0);
+  const Metrics m = run(p, s, Mode::kTaskAllocation, 3, [&](const World& w) {
+    for (std::size_t i = 0; i < w.memory.size(); ++i) {
+      if (w.memory[i].ta.state == TaState::kPathFormation) initiated[i] = 1;
+      if (w.memory[i].ta.state == TaState::kGoalFounder && founded[i] == 0) {
+        founded[i] = 1;
+        ++founders;
+      }
+    }
+    return false;
+  });
+  int count = 0;
+  for (const std::uint8_t v : initiated) count += v;
+  EXPECT_GT(founders, 1);  // the case this test is for: duplicate founders
+  EXPECT_EQ(m.allocated, count);
+  EXPECT_NEAR(m.resource_reduction_pct, 100.0 * (70 - count) / 70.0, 1e-9);
+}
+
 TEST(Determinism, GoldenHashTaskAllocationShortChain) {
   // update only with a reason, stated in the commit that changes it
   constexpr std::uint64_t kExpected = 0x894c315afc57e27aULL;  // complete: 4390 ticks, 18 allocated
