@@ -87,17 +87,17 @@ bool is_path_colour(Led c) {
 // a chain robot advertising it as its parent, seen (vision + ID tags) or heard on the
 // range-and-bearing medium (3 m, past the camera's R_vis). Gathered once per tick.
 struct Claims {
-  std::array<std::uint64_t, 4> robots{};  ///< bit per robot id (ids travel in one byte)
+  IdSet robots;
   bool goal = false;
 
   void add(int emitter) {
     if (emitter == kGoalEmitter) goal = true;
-    if (emitter >= 0 && emitter < 256) robots[emitter / 64] |= std::uint64_t{1} << (emitter % 64);
+    if (emitter >= 0 && emitter <= 255) robots.insert(static_cast<std::uint8_t>(emitter));
   }
 
   bool has(int emitter) const {
     if (emitter == kGoalEmitter) return goal;
-    return emitter >= 0 && emitter < 256 && ((robots[emitter / 64] >> (emitter % 64)) & 1u) != 0;
+    return emitter >= 0 && emitter <= 255 && robots.contains(static_cast<std::uint8_t>(emitter));
   }
 };
 

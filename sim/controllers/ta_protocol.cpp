@@ -70,7 +70,7 @@ TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_f
     out.type = MsgType::kAck;
     out.dest = best_id;
     if (!f.is_acked(best_id)) {  // a repeated JOIN (its ACK was lost) is answered, not counted
-      f.acked[best_id / 64] |= std::uint64_t{1} << (best_id % 64);
+      f.acked.insert(best_id);
       ++f.acks;
       --f.remaining;
     }

@@ -41,18 +41,27 @@ struct TaMessage {
   bool has_goal() const { return (flags & kFlagGoal) != 0; }
 };
 
+/// A set of robot ids as they travel on the medium (one byte each).
+struct IdSet {
+  std::array<std::uint64_t, 4> bits{};
+
+  void insert(std::uint8_t id) { bits[id / 64] |= std::uint64_t{1} << (id % 64); }
+
+  bool contains(std::uint8_t id) const { return ((bits[id / 64] >> (id % 64)) & 1u) != 0; }
+};
+
 RabPayload encode(const TaMessage& m);
 TaMessage decode(const RabPayload& payload);
 
 /// The founder's side. One tick at a time: it reads the JOINs addressed to it and returns what it
 /// broadcasts.
 struct FounderProtocol {
-  int remaining = 0;                     ///< ACKs still to send
-  int acks = 0;                          ///< distinct robots ACKed so far (the allocation, the founder aside)
-  int done_ticks = 0;                    ///< ticks DONE has been broadcast
-  std::array<std::uint64_t, 4> acked{};  ///< ids ACKed (a robot is never counted twice)
+  int remaining = 0;   ///< ACKs still to send
+  int acks = 0;        ///< distinct robots ACKed so far (the allocation, the founder aside)
+  int done_ticks = 0;  ///< ticks DONE has been broadcast
+  IdSet acked;         ///< ids ACKed (a robot is never counted twice)
 
-  bool is_acked(std::uint8_t id) const { return (acked[id / 64] >> (id % 64)) & 1u; }
+  bool is_acked(std::uint8_t id) const { return acked.contains(id); }
 
   /// Finished: every robot ACKed and DONE broadcast for `done_for` ticks.
   bool finished(int done_for) const { return remaining == 0 && done_ticks >= done_for; }
@@ -85,7 +94,7 @@ DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox
 /// single_child [R]: an allocated robot forming from, or chained to, `emitter` (a robot id or
 /// kGoalEmitter) says so on the medium: parent byte = the robot's id, or kGoalRabId for the goal.
 inline constexpr std::uint8_t kGoalRabId = 254;
-inline constexpr std::uint8_t kClaimState = 3;  ///< state byte of a claim: TaState::kPathFormation
+inline constexpr std::uint8_t kClaimState = 3;  ///< state byte of a claim: TaState::kPathFormation (asserted)
 TaMessage claim_message(std::uint8_t my_id, int emitter);
 
 /// The emitter a message claims (claim_message), or kNobody.

@@ -12,6 +12,9 @@
 
 namespace swarmpath::sim {
 
+// a claim (single_child) names its sender's state as the TA state it is in
+static_assert(kClaimState == static_cast<std::uint8_t>(TaState::kPathFormation));
+
 std::string_view to_string(TaState s) {
   switch (s) {
     case TaState::kScout:
