@@ -467,7 +467,7 @@ Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const
     return drive(p, mem, (std::min(p.v_max, len) / len) * back, PfState::kSubgoalForming);
   }
   // a robot that found the goal from its far side backs off to the spot, not round the goal (R)
-  const bool spot = p.backoff_spot || (p.backoff_far_spot && mem.pf.far_side);
+  const bool spot = p.backoff_spot || mem.pf.backoff_spot || (p.backoff_far_spot && mem.pf.far_side);
   if (mem.pf.target_reached && !spot) {
     // back off along the robot's own way from the nest: a route it knows is passable
     if (!mem.nav.on_trail && !mem.trail.empty()) {

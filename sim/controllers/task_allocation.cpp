@@ -123,6 +123,7 @@ void start_path_formation(const TaContext& c, RobotMemory& mem, double t_founder
   mem.pf.has_sighting = keep.has_sighting;
   mem.pf.to_sighting = c.p.site_fidelity && keep.has_sighting;
   mem.pf.single_child = c.p.single_child;
+  mem.pf.backoff_spot = c.p.ta_backoff_spot;
   mem.trail.reset(c.in.pose.p);
 }
 
@@ -136,6 +137,8 @@ void dm_initiates(const TaContext& c, RobotMemory& mem) {
   const TaMessage& ack = c.sight.dm.ack;
   start_path_formation(c, mem, static_cast<double>(ack.t_founder_ds));
   mem.pf.follow_guide = c.p.guided_departure;
+  // R: the robots ACKed later (fewer remaining) leave first, depart_gap ticks apart
+  mem.ta.depart_tick = c.in.tick + static_cast<std::int64_t>(std::llround(c.p.depart_gap * ack.remaining));
   if (c.p.share_goal && ack.has_goal()) {
     // R: where the founder saw the goal, relative to the nest: travel there once the guide is lost
     mem.pf.sighting =
@@ -252,7 +255,12 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
     case TaState::kScout:  // exploring, returning, resting: path formation's rows #2-#4 (TA a, b)
       cmd = path_formation_step(in, p, mem);
       break;
-    case TaState::kPathFormation:  // allocated (TA e): path formation
+    case TaState::kPathFormation:     // allocated (TA e): path formation
+      if (in.tick < m.depart_tick) {  // R: waiting its turn to leave (depart_gap)
+        cmd = drive_to(in, p, mem, mem.nest, 0.5 * p.r_nest_reach, Led::kGray80);
+        mem.trail.reset(in.pose.p);
+        break;
+      }
       cmd = path_formation_step(in, p, mem);
       break;
     case TaState::kGoalFounder:

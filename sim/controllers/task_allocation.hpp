@@ -44,7 +44,8 @@ struct TaMemory {
   std::int64_t alloc_done_tick = -1;  ///< the tick it first broadcast DONE (T_alloc)
   int allocated = -1;                 ///< then: robots allocated, itself included when it counts itself
   // decision maker
-  std::int64_t waited = 0;  ///< ticks at the nest without hearing a REQUEST
+  std::int64_t waited = 0;       ///< ticks at the nest without hearing a REQUEST
+  std::int64_t depart_tick = 0;  ///< allocated: the tick it leaves the nest (depart_gap) [R]
   // resting task
   bool arrived = false;
   std::uint8_t last_row = 0;  ///< the TA table row that fired last (index + 1)
