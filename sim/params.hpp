@@ -88,8 +88,7 @@ struct Params {
   bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
   bool single_child = true;      ///< TA: allocated explorers attach only to an unclaimed goal or subgoal [R]
   bool ta_backoff_spot = true;   ///< TA: allocated robots back off to the spot toward the nest [R]
-  double depart_gap =
-      50;  ///< TA: ticks between allocated robots' departures, in ACK order (0: all at once) [R]
+  double depart_gap = 50;        ///< TA: ticks between departures, in ACK order (0: all at once) [R]
 };
 
 enum class ParamType : std::uint8_t { kReal, kInteger, kBool, kChoice };
