@@ -85,10 +85,15 @@ struct Params {
       false;  ///< forming: back off to the spot d_sub from the target toward the nest (else along the trail)
   bool share_goal = true;  ///< TA: the founder's ACK carries where it saw the goal (relative to the nest)
   bool seek_hidden_reference = true;  ///< aligning: a reference out of view at the start is looked for first
-  bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
-  bool single_child = true;      ///< TA: allocated explorers attach only to an unclaimed goal or subgoal [R]
-  bool ta_backoff_spot = true;   ///< TA: allocated robots back off to the spot toward the nest [R]
-  double depart_gap = 50;        ///< TA: ticks between departures, in ACK order (0: all at once) [R]
+  bool backoff_far_spot = true;   ///< forming: back off to the spot when the goal was found from its far side
+  bool single_child = true;       ///< TA: allocated explorers attach only to an unclaimed goal or subgoal [R]
+  bool ta_backoff_spot = true;    ///< TA: allocated robots back off to the spot toward the nest [R]
+  double depart_gap = 50;         ///< TA: ticks between departures, in ACK order (0: all at once) [R]
+  bool founder_seniority = true;  ///< TA T8: a founder that has ACKed robots outranks one that has not [R]
+  double nest_wait = 0.5;         ///< TA: decision makers and robots waiting to leave stop this fraction of
+                                  ///< R_nest_reach from the nest [R]
+  double founder_wait = 0.9;  ///< TA: the founder runs the protocol this fraction of R_nest_reach from the
+                              ///< nest, at the crowd's rim [R]
 };
 
 enum class ParamType : std::uint8_t { kReal, kInteger, kBool, kChoice };

@@ -74,14 +74,14 @@ struct PfMemory {
   Vec2 sighting;                 ///< where the goal or a RED subgoal was last seen [m]
   bool has_sighting = false;
   bool sighted_this_trip = false;
-  bool to_sighting = false;       ///< exploring: first travelling back to the sighting (site fidelity)
-  std::int64_t travel_ticks = 0;  ///< exploring: ticks spent travelling to the sighting (not budget)
-  bool guide = false;             ///< TA founder leading the allocated robots to the goal (LED CYAN) [R]
-  bool follow_guide = false;      ///< allocated robot following the CYAN guides on its first trip [R]
-  std::int64_t guide_unseen = 0;  ///< consecutive ticks a follower has seen no guide
-  int guide_hops = 0;             ///< follower: hops to the founder, advertised with the light
-  std::uint8_t last_row = 0;      ///< the table row that fired last (index + 1; 0 = none)
-  std::int64_t fired_tick = -1;   ///< the tick it fired
+  bool to_sighting = false;        ///< exploring: first travelling back to the sighting (site fidelity)
+  std::int64_t travel_ticks = 0;   ///< exploring: ticks spent travelling to the sighting (not budget)
+  bool guide = false;              ///< TA founder leading the allocated robots to the goal (LED CYAN) [R]
+  bool follow_guide = false;       ///< allocated robot following the CYAN guides on its first trip [R]
+  std::int64_t guide_unseen = 0;   ///< consecutive ticks a follower has seen no guide
+  int guide_hops = kMaxGuideHops;  ///< follower: hops to the founder, advertised with the light
+  std::uint8_t last_row = 0;       ///< the table row that fired last (index + 1; 0 = none)
+  std::int64_t fired_tick = -1;    ///< the tick it fired
 };
 
 /// What the robot makes of this tick's camera blobs (computed once, before the guards).

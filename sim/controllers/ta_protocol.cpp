@@ -81,23 +81,35 @@ TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_f
   } else {
     out.type = MsgType::kRequest;
   }
+  if (f.acks > 0) out.flags = static_cast<std::uint8_t>(out.flags | kFlagAllocating);
   out.remaining = static_cast<std::uint16_t>(f.remaining);
   return out;
 }
 
-std::uint8_t smaller_founder_heard(std::uint8_t my_id, std::span<const RabMessage> inbox) {
-  std::uint8_t best = kBroadcastId;
-  for (const RabMessage& r : inbox) {
-    const TaMessage m = decode(r.data);
-    const bool founder = m.type == MsgType::kRequest || m.type == MsgType::kAck;
-    if (founder && m.id < my_id && m.id < best) best = m.id;
-  }
-  return best;
+bool outranks(FounderRank a, FounderRank b, bool seniority) {
+  if (seniority && a.allocating != b.allocating) return a.allocating;
+  return a.id < b.id;
 }
 
-DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox) {
+namespace {
+
+bool from_founder(const TaMessage& m) { return m.type == MsgType::kRequest || m.type == MsgType::kAck; }
+
+}  // namespace
+
+std::uint8_t senior_founder_heard(FounderRank me, std::span<const RabMessage> inbox, bool seniority) {
+  FounderRank best = me;
+  for (const RabMessage& r : inbox) {
+    const TaMessage m = decode(r.data);
+    const FounderRank them{m.allocating(), m.id};
+    if (from_founder(m) && m.id != me.id && outranks(them, best, seniority)) best = them;
+  }
+  return best.id == me.id ? kBroadcastId : best.id;
+}
+
+DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox, bool seniority) {
   DmTick out;
-  std::uint8_t founder = kBroadcastId;
+  FounderRank founder;
   bool done = false;
   for (const RabMessage& r : inbox) {
     const TaMessage m = decode(r.data);
@@ -107,16 +119,17 @@ DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox
       return out;
     }
     if (m.type == MsgType::kDone || m.alloc_done()) done = true;
-    if ((m.type == MsgType::kRequest || m.type == MsgType::kAck) && m.id < founder) founder = m.id;
+    const FounderRank them{m.allocating(), m.id};
+    if (from_founder(m) && (founder.id == kBroadcastId || outranks(them, founder, seniority))) founder = them;
   }
   if (done) {
     out.decision = DmDecision::kRest;
     return out;
   }
-  if (founder != kBroadcastId) {
+  if (founder.id != kBroadcastId) {
     out.send.id = my_id;
     out.send.type = MsgType::kJoin;
-    out.send.dest = founder;
+    out.send.dest = founder.id;
   }
   return out;
 }

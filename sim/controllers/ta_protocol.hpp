@@ -16,14 +16,16 @@ namespace swarmpath::sim {
 
 enum class MsgType : std::uint8_t { kNone = 0, kRequest = 1, kJoin = 2, kAck = 3, kDone = 4 };
 
-inline constexpr std::uint8_t kBroadcastId = 255;  ///< destination "all" / parent "none"
-inline constexpr std::uint8_t kFlagAllocDone = 1;  ///< flags bit 0: the allocation is over
-inline constexpr std::uint8_t kFlagGoal = 2;       ///< flags bit 1: bytes 10-13 hold the goal [R]
-inline constexpr int kMaxTaRobots = 254;           ///< ids travel in one byte
+inline constexpr std::uint8_t kBroadcastId = 255;   ///< destination "all" / parent "none"
+inline constexpr std::uint8_t kFlagAllocDone = 1;   ///< flags bit 0: the allocation is over
+inline constexpr std::uint8_t kFlagGoal = 2;        ///< flags bit 1: bytes 10-13 hold the goal [R]
+inline constexpr std::uint8_t kFlagAllocating = 4;  ///< flags bit 2: this founder has ACKed a robot [R]
+inline constexpr int kMaxTaRobots = 254;            ///< ids travel in one byte
 
 /// SPEC §2.6 framing of the 10-byte payload: 0 id; 1 state; 2 parent id (255 none); 3 flags
-/// (bit 0 ALLOC_DONE); 4 message type; 5 destination id (255 all); 6-7 remaining; 8-9 t_founder/10;
-/// and [R] 10-13 the founder's goal sighting relative to the nest (x, y in cm, signed; flags bit 1).
+/// (bit 0 ALLOC_DONE; [R] bit 1 goal, bit 2 allocating); 4 message type; 5 destination id (255 all); 6-7
+/// remaining; 8-9 t_founder/10; and [R] 10-13 the founder's goal sighting relative to the nest (x, y in cm,
+/// signed; flags bit 1).
 struct TaMessage {
   std::uint8_t id = 0;
   std::uint8_t state = 0;
@@ -39,6 +41,8 @@ struct TaMessage {
   bool alloc_done() const { return (flags & kFlagAllocDone) != 0; }
 
   bool has_goal() const { return (flags & kFlagGoal) != 0; }
+
+  bool allocating() const { return (flags & kFlagAllocating) != 0; }
 };
 
 /// A set of robot ids as they travel on the medium (one byte each).
@@ -86,10 +90,20 @@ struct DmTick {
   TaMessage ack;   ///< the ACK addressed to this robot (its t_founder, goal sighting), with kGo
 };
 
+/// Which of two duplicate founders wins (SPEC §2.6 T8): the smaller id; with `seniority` [R], a
+/// founder that has ACKed robots (kFlagAllocating) first, so that a late founder with a smaller id
+/// does not start a second allocation beside it.
+struct FounderRank {
+  bool allocating = false;
+  std::uint8_t id = kBroadcastId;
+};
+
+bool outranks(FounderRank a, FounderRank b, bool seniority);
+
 /// One decision-maker tick: an ACK addressed to it -> go (INITIATE_TASK); DONE or ALLOC_DONE
-/// heard -> rest; a founder requesting (REQUEST, or ACKs to others) -> JOIN the founder with the
-/// smallest id.
-DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox);
+/// heard -> rest; a founder requesting (REQUEST, or ACKs to others) -> JOIN the founder that
+/// ranks first (outranks).
+DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox, bool seniority = false);
 
 /// single_child [R]: an allocated robot forming from, or chained to, `emitter` (a robot id or
 /// kGoalEmitter) says so on the medium: parent byte = the robot's id, or kGoalRabId for the goal.
@@ -100,9 +114,9 @@ TaMessage claim_message(std::uint8_t my_id, int emitter);
 /// The emitter a message claims (claim_message), or kNobody.
 int claimed_emitter(const TaMessage& m);
 
-/// The founder that wins among duplicates: a REQUEST (or ACK) heard from a founder with a smaller
-/// id than `my_id` (SPEC §2.6 T8); returns that id or kBroadcastId.
-std::uint8_t smaller_founder_heard(std::uint8_t my_id, std::span<const RabMessage> inbox);
+/// The founder that wins among duplicates: a REQUEST (or ACK) heard from a founder that outranks
+/// `me` (SPEC §2.6 T8); returns its id or kBroadcastId.
+std::uint8_t senior_founder_heard(FounderRank me, std::span<const RabMessage> inbox, bool seniority = false);
 
 /// SPEC §2.7: n = ceil(l/v + delta) clamped to [n_min, N], l = s t [cm], v = R_vis [cm].
 int robots_needed(double t_seconds, double speed_cm_s, double r_vis_cm, double delta, int n_min, int swarm);

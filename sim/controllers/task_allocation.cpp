@@ -80,8 +80,8 @@ bool learned_of_the_goal(const TaContext& c) {  // T3, TA f
   return c.sight.founder_or_dm_seen || c.sight.request_heard;
 }
 
-bool smaller_founder(const TaContext& c) {  // T8 [R]: duplicate founders
-  return c.sight.smaller_founder != kBroadcastId;
+bool senior_founder(const TaContext& c) {  // T8 [R]: duplicate founders
+  return c.sight.senior_founder != kBroadcastId;
 }
 
 bool late_founder(const TaContext& c) {  // a founder that hears ALLOC_DONE before it allocates
@@ -157,7 +157,7 @@ const std::array<TaTransition, 9> kTable{{
   {TaState::kScout,         learned_of_the_goal,          TaState::kDecisionMaker, nullptr,           "T3",  "f"},
   {TaState::kDecisionMaker, acked,                        TaState::kPathFormation, dm_initiates,      "T5",  "e"},
   {TaState::kDecisionMaker, told_to_rest,                 TaState::kRestingTask,   nullptr,           "T6",  "d"},
-  {TaState::kGoalFounder,   smaller_founder,              TaState::kDecisionMaker, nullptr,           "T8",  ""},
+  {TaState::kGoalFounder,   senior_founder,               TaState::kDecisionMaker, nullptr,           "T8",  ""},
   {TaState::kGoalFounder,   late_founder,                 TaState::kRestingTask,   nullptr,           "T7f", "d"},
   {TaState::kGoalFounder,   founder_done_and_counts_self, TaState::kPathFormation, founder_initiates, "T9",  "e"},
   {TaState::kGoalFounder,   founder_done,                 TaState::kRestingTask,   nullptr,           "T9r", "d"},
@@ -207,7 +207,7 @@ TaMessage alloc_done_flag(std::uint8_t id, TaState s) {
 
 std::span<const TaTransition> ta_transitions() { return kTable; }
 
-void ta_perceive(const Percept& in, const Params& p, Vec2 nest, TaSight& sight) {
+void ta_perceive(const Percept& in, const Params& p, Vec2 nest, bool allocating, TaSight& sight) {
   sight = TaSight{};
   sight.nest_distance_cm = 100.0 * dist(in.pose.p, nest);
   for (const Blob& b : in.blobs) {
@@ -221,8 +221,8 @@ void ta_perceive(const Percept& in, const Params& p, Vec2 nest, TaSight& sight) 
     if (m.type == MsgType::kRequest || m.type == MsgType::kAck) sight.request_heard = true;
     if (m.type == MsgType::kDone || m.alloc_done()) sight.alloc_done_heard = true;
   }
-  sight.smaller_founder = smaller_founder_heard(id, in.rab);
-  sight.dm = decision_maker_tick(id, in.rab);
+  sight.senior_founder = senior_founder_heard({allocating, id}, in.rab, p.founder_seniority);
+  sight.dm = decision_maker_tick(id, in.rab, p.founder_seniority);
 }
 
 const TaTransition* ta_transition(const TaContext& c, RobotMemory& mem) {
@@ -243,7 +243,7 @@ const TaTransition* ta_transition(const TaContext& c, RobotMemory& mem) {
 Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& mem, int swarm) {
   TaMemory& m = mem.ta;
   TaSight sight;
-  ta_perceive(in, p, mem.nest, sight);
+  ta_perceive(in, p, mem.nest, m.protocol.acks > 0, sight);
   const TaContext c{in, p, m, sight, swarm};
   if (ta_transition(c, mem) != nullptr) nav_reset(mem.nav);
   ++m.t_state;
@@ -257,7 +257,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
       break;
     case TaState::kPathFormation:     // allocated (TA e): path formation
       if (in.tick < m.depart_tick) {  // R: waiting its turn to leave (depart_gap)
-        cmd = drive_to(in, p, mem, mem.nest, 0.5 * p.r_nest_reach, Led::kGray80);
+        cmd = drive_to(in, p, mem, mem.nest, p.nest_wait * p.r_nest_reach, Led::kGray80);
         mem.trail.reset(in.pose.p);
         break;
       }
@@ -265,7 +265,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
       break;
     case TaState::kGoalFounder:
       // back to the nest (TA c / PF k); there it runs the protocol (T4)
-      cmd = drive_to(in, p, mem, mem.nest, 0.5 * p.r_nest_reach, Led::kCyan);
+      cmd = drive_to(in, p, mem, mem.nest, p.founder_wait * p.r_nest_reach, Led::kCyan);
       if (at_nest && !m.protocol_started) {
         m.protocol_started = true;
         m.protocol = start_founder(m.n - (p.founder_counts_self ? 1 : 0));
@@ -291,7 +291,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
       break;
     case TaState::kDecisionMaker:
       // gather at the nest; answer a requesting founder with JOIN
-      cmd = drive_to(in, p, mem, mem.nest, 0.5 * p.r_nest_reach, Led::kGray80);
+      cmd = drive_to(in, p, mem, mem.nest, p.nest_wait * p.r_nest_reach, Led::kGray80);
       m.waited = (at_nest && !sight.request_heard) ? m.waited + 1 : 0;
       if (sight.dm.send.type == MsgType::kJoin) cmd = say(cmd, sight.dm.send);
       break;

@@ -59,8 +59,8 @@ struct TaSight {
   bool path_colour_seen = false;    ///< a robot in a path-formation state (SPEC T7)
   bool request_heard = false;
   bool alloc_done_heard = false;
-  std::uint8_t smaller_founder = kBroadcastId;
-  DmTick dm;  ///< the decision maker's reading of the inbox
+  std::uint8_t senior_founder = kBroadcastId;  ///< a founder that outranks this one (T8)
+  DmTick dm;                                   ///< the decision maker's reading of the inbox
   double nest_distance_cm = 0;
 };
 
@@ -87,7 +87,7 @@ struct TaTransition {
 std::span<const TaTransition> ta_transitions();
 
 /// Reads the camera and the RAB inbox into `sight`.
-void ta_perceive(const Percept& in, const Params& p, Vec2 nest, TaSight& sight);
+void ta_perceive(const Percept& in, const Params& p, Vec2 nest, bool allocating, TaSight& sight);
 
 /// Applies the first matching row (if any); returns it or nullptr.
 const TaTransition* ta_transition(const TaContext& c, RobotMemory& mem);

@@ -195,12 +195,42 @@ TEST(TaProtocol, DuplicateFoundersDeferToTheSmallerId) {
   inbox[0].data = encode(req);
   req.id = 4;
   inbox[1].data = encode(req);
-  EXPECT_EQ(smaller_founder_heard(7, inbox), 4);
-  EXPECT_EQ(smaller_founder_heard(3, inbox), kBroadcastId);  // 3 is the smallest: it stays founder
+  EXPECT_EQ(senior_founder_heard({false, 7}, inbox), 4);
+  EXPECT_EQ(senior_founder_heard({false, 3}, inbox), kBroadcastId);  // 3 is the smallest: it stays founder
   // a decision maker hearing both joins the smaller one
   const DmTick d = decision_maker_tick(20, inbox);
   EXPECT_EQ(d.send.type, MsgType::kJoin);
   EXPECT_EQ(d.send.dest, 4);
+}
+
+// founder_seniority [R]: a founder that has ACKed robots keeps its allocation; a late founder with a
+// smaller id defers to it instead of starting a second one (env1, 70 robots, seed 3: 70 allocated
+// by four founders without it)
+TEST(TaProtocol, AFounderThatHasAllocatedOutranksASmallerIdWithSeniority) {
+  FounderProtocol senior = start_founder(5);
+  std::vector<RabMessage> joins(1);
+  TaMessage join;
+  join.id = 30;
+  join.type = MsgType::kJoin;
+  join.dest = 9;
+  joins[0].data = encode(join);
+  const TaMessage ack = founder_tick(senior, 9, 100, joins);  // founder 9 ACKs robot 30
+  ASSERT_EQ(ack.type, MsgType::kAck);
+  EXPECT_TRUE(ack.allocating());
+  TaMessage late;  // founder 4 arrives and requests
+  late.id = 4;
+  late.type = MsgType::kRequest;
+  std::vector<RabMessage> inbox(2);
+  inbox[0].data = encode(ack);
+  inbox[1].data = encode(late);
+  // with seniority: 4 (no ACK yet) defers to 9, 9 does not defer to 4, decision makers join 9
+  EXPECT_EQ(senior_founder_heard({false, 4}, inbox, true), 9);
+  EXPECT_EQ(senior_founder_heard({true, 9}, inbox, true), kBroadcastId);
+  EXPECT_EQ(decision_maker_tick(20, inbox, true).send.dest, 9);
+  // without it the smaller id wins, whatever it has allocated (SPEC T8)
+  EXPECT_EQ(senior_founder_heard({false, 4}, inbox, false), kBroadcastId);
+  EXPECT_EQ(senior_founder_heard({true, 9}, inbox, false), 4);
+  EXPECT_EQ(decision_maker_tick(20, inbox, false).send.dest, 4);
 }
 
 TEST(TaProtocol, AnAckedDecisionMakerLearnsWhereTheGoalWasSeen) {  // R: share_goal
