@@ -568,9 +568,8 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   double red_best = p.d_detect;
   double lure_best = p.r_vis + 1.0;
   double sub_best = p.r_vis + 1.0;
-  // R: a follower takes only a guide fewer hops from the founder than itself, so that no two
-  // followers follow each other round in a circle (env1, 70 robots, seed 1: two circled by the nest
-  // for 1 700 ticks)
+  // R: a follower takes only a guide fewer hops from the founder than itself (a fresh one counts
+  // kMaxGuideHops), so that hop counts only go down and no followers follow each other in a loop
   int guide_hops = m.guide_hops - 1;
   double guide_far = -1.0;
   for (const Blob& b : in.blobs) {
