@@ -55,9 +55,10 @@ Metrics MetricsAccumulator::finish(std::int64_t ticks, double dt, std::uint64_t 
   m.success = path_.complete();
   m.ticks_to_chain = m.subgoal_path.tick;
   m.ticks_to_opt1 = m.opt1_path.tick;
-  m.allocated = allocated_;
+  // a path can complete before any founder broadcasts DONE: the robots that initiated the task count
+  m.allocated = allocated_ >= 0 || ever_allocated_count_ == 0 ? allocated_ : ever_allocated_count_;
   m.ticks_to_allocate = alloc_tick_;
-  if (allocated_ >= 0) m.resource_reduction_pct = 100.0 * (robots_ - allocated_) / robots_;
+  if (m.allocated >= 0) m.resource_reduction_pct = 100.0 * (robots_ - m.allocated) / robots_;
   if (m.subgoal_path.tick >= 0) m.subgoal_path_length_tu = to_tu(m.subgoal_path.length_m);
   if (m.opt1_path.tick >= 0) m.opt1_path_length_tu = to_tu(m.opt1_path.length_m);
   if (m.success) {
