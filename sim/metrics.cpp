@@ -26,15 +26,11 @@ void MetricsAccumulator::observe(const Scenario& s, const World& w) {
       ++ever_allocated_count_;
     }
   }
-  if (alloc_tick_ >= 0) {
-    allocated_ = ever_allocated_count_;
-    return;
-  }
+  if (alloc_tick_ >= 0) return;
   // T_alloc: the first founder to broadcast DONE
   for (const RobotMemory& mem : w.memory) {
     if (mem.ta.alloc_done_tick == w.tick - 1) {
       alloc_tick_ = w.tick;
-      allocated_ = ever_allocated_count_;
       break;
     }
   }
@@ -56,7 +52,7 @@ Metrics MetricsAccumulator::finish(std::int64_t ticks, double dt, std::uint64_t 
   m.ticks_to_chain = m.subgoal_path.tick;
   m.ticks_to_opt1 = m.opt1_path.tick;
   // a path can complete before any founder broadcasts DONE: the robots that initiated the task count
-  m.allocated = allocated_ >= 0 || ever_allocated_count_ == 0 ? allocated_ : ever_allocated_count_;
+  m.allocated = alloc_tick_ >= 0 || ever_allocated_count_ > 0 ? ever_allocated_count_ : -1;
   m.ticks_to_allocate = alloc_tick_;
   if (m.allocated >= 0) m.resource_reduction_pct = 100.0 * (robots_ - m.allocated) / robots_;
   if (m.subgoal_path.tick >= 0) m.subgoal_path_length_tu = to_tu(m.subgoal_path.length_m);

@@ -56,7 +56,6 @@ class MetricsAccumulator {
   double distance_m_ = 0;
   bool watch_path_ = false;
   PathObserver path_;
-  int allocated_ = -1;
   std::int64_t alloc_tick_ = -1;
   std::vector<std::uint8_t> ever_allocated_;  ///< per robot: has entered INITIATE_TASK
   int ever_allocated_count_ = 0;

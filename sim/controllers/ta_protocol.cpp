@@ -120,7 +120,7 @@ DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox
     }
     if (m.type == MsgType::kDone || m.alloc_done()) done = true;
     const FounderRank them{m.allocating(), m.id};
-    if (from_founder(m) && (founder.id == kBroadcastId || outranks(them, founder, seniority))) founder = them;
+    if (from_founder(m) && outranks(them, founder, seniority)) founder = them;  // unset: id 255
   }
   if (done) {
     out.decision = DmDecision::kRest;
