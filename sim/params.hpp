@@ -85,10 +85,17 @@ struct Params {
       false;  ///< forming: back off to the spot d_sub from the target toward the nest (else along the trail)
   bool share_goal = true;  ///< TA: the founder's ACK carries where it saw the goal (relative to the nest)
   bool seek_hidden_reference = true;  ///< aligning: a reference out of view at the start is looked for first
-  bool backoff_far_spot = true;   ///< forming: back off to the spot when the goal was found from its far side
-  bool single_child = true;       ///< TA: allocated explorers attach only to an unclaimed goal or subgoal [R]
-  bool ta_backoff_spot = true;    ///< TA: allocated robots back off to the spot toward the nest [R]
-  double depart_gap = 50;         ///< TA: ticks between departures, in ACK order (0: all at once) [R]
+  bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
+  bool single_child = true;      ///< TA: allocated explorers attach only to an unclaimed goal or subgoal [R]
+  bool ta_backoff_spot = true;   ///< TA: allocated robots back off to the spot toward the nest [R]
+  double give_way = 20;          ///< TA: a resting robot pressed by another backs away this many ticks, then
+                                 ///< returns (0: never) [R]
+  double depart_gap = 50;        ///< TA: ticks between departures, in ACK order (0: all at once) [R]
+  bool seek_tip = true;     ///< TA: an allocated explorer that sees a robot forming a subgoal and no free one
+                            ///< waits beside it for the free subgoal it becomes [R]
+  double tip_hover = 50;    ///< TA, seek_tip: distance at which it waits by the forming robot [cm]
+  double nest_crowd = 200;  ///< TA: within this of the nest (the resting and waiting robots) an allocated
+                            ///< robot does not edge-follow, it slides past robots instead [cm] [R]
   bool founder_seniority = true;  ///< TA T8: a founder that has ACKed robots outranks one that has not [R]
   double nest_wait = 0.5;         ///< TA: decision makers and robots waiting to leave stop this fraction of
                                   ///< R_nest_reach from the nest [R]

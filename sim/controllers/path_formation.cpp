@@ -381,7 +381,7 @@ Command stop(PfState s) {
 // row 2's).
 bool follow_guide(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight, Command& cmd) {
   PfMemory& m = mem.pf;
-  if (sight.lure != nullptr) {
+  if (sight.lure != nullptr || sight.chain_end != nullptr) {
     m.follow_guide = false;
     return false;
   }
@@ -407,6 +407,19 @@ bool follow_guide(const Percept& in, const Params& p, RobotMemory& mem, const Pf
   return true;
 }
 
+// seek_tip [R]: an allocated explorer that sees a robot forming the next link (WHITE) and no
+// free subgoal walks to it and waits tip_hover from it for the RED it becomes, which lures it
+// (row 1). Waiting spends the budget.
+Command wait_by_chain_end(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
+  PfMemory& m = mem.pf;
+  m.to_sighting = false;
+  const Avoidance avoid = diffusion(in.proximity, p);
+  Vec2 v = (avoid.collision ? avoid.direction : Vec2{}) + sight.repulsion;
+  const double gap = std::clamp((sight.chain_end->distance_cm - p.tip_hover) / p.tip_hover, -1.0, 1.0);
+  if (gap > 0.0) v += gap * sight.chain_end->dir;
+  return drive(p, mem, p.v_max * v, PfState::kExploring);
+}
+
 // V = v_max (D + w_away F_away(nest) + w_rw u_phi + R), or the obstacle's edge when the robot
 // can get no farther from the nest; an explorer whose edge following gets it nowhere (the arena's
 // boundary, a corner) ends its trip
@@ -418,6 +431,7 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
   if (m.follow_guide) {
     if (Command cmd; follow_guide(in, p, mem, sight, cmd)) return cmd;
   }
+  if (sight.lure == nullptr && sight.chain_end != nullptr) return wait_by_chain_end(in, p, mem, sight);
   if (m.to_sighting) ++m.travel_ticks;
   if (m.to_sighting && (sight.lure != nullptr || dist(in.pose.p, m.sighting) < 0.5)) {
     m.to_sighting = false;
@@ -425,9 +439,13 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
     mem.walk_dir = {in.pose.c, in.pose.s};
     nav_reset(mem.nav);
   }
+  // R (nest_crowd): robots crowd the nest in task allocation; edge following them is no way out
+  const bool in_crowd = sight.nest_distance_cm < m.nest_crowd_cm;
+  if (in_crowd) nav_reset(mem.nav);
   if (m.to_sighting) {
     const Avoidance avoid = diffusion(in.proximity, p);
-    const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, m.sighting);
+    const Vec2 f =
+        in_crowd ? field_toward(in.pose, m.sighting) : nav_toward(in, p, mem.nav, mem.rng, m.sighting);
     const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
     if (!m.guide) return drive(p, mem, p.v_max * v, PfState::kExploring);
     Command cmd = drive(p, mem, p.guide_speed * p.v_max * v, PfState::kExploring);
@@ -435,7 +453,7 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
     return cmd;
   }
   m.guide = false;
-  if (sight.lure == nullptr &&
+  if (sight.lure == nullptr && !in_crowd &&
       nav_update(mem.nav, p, mem.rng, sight.nest_distance_cm, in, -field_toward(in.pose, mem.nest))) {
     return drive(p, mem, p.v_max * follow_edge(in, mem.nav.side), PfState::kExploring);
   }
@@ -572,6 +590,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   // kMaxGuideHops), so that hop counts only go down and no followers follow each other in a loop
   int guide_hops = m.guide_hops - 1;
   double guide_far = -1.0;
+  double end_to_nest = 1e18;
   for (const Blob& b : in.blobs) {
     if (m.follow_guide && b.color == Led::kCyan && b.emitter >= 0) {
       // the light's tag is its hop count to the founder (the founder at the nest advertises none)
@@ -612,6 +631,14 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
       sight.my_subnest = &b;
     }
     if (b.color == Led::kWhite && b.emitter >= 0) sight.forming_in_view = true;
+    // R (seek_tip): the chain's end nearest the nest, where the next free subgoal will stand
+    if (m.seek_tip && b.color == Led::kWhite && b.emitter >= 0) {
+      const double to_nest = dist(blob_position(in.pose, b), nest);
+      if (to_nest < end_to_nest) {
+        end_to_nest = to_nest;
+        sight.chain_end = &b;
+      }
+    }
     // R: recovery robots repel everyone; explorers keep clear of path robots too (label e)
     const bool repels =
         b.color == Led::kOrange || (m.state == PfState::kExploring && is_path_colour(b.color));

@@ -57,6 +57,8 @@ struct PfMemory {
   bool scout = false;           ///< task allocation's scout: explores, but row 1 is the TA's (founder)
   bool single_child = false;    ///< TA, allocated with single_child: claims and respects claims [R]
   bool backoff_spot = false;    ///< TA, allocated with ta_backoff_spot: forms at the spot toward the nest [R]
+  bool seek_tip = false;        ///< TA, allocated with seek_tip: waits by a forming robot [R]
+  double nest_crowd_cm = 0;     ///< TA, allocated: no edge following this close to the nest [R]
   std::int64_t t_state = 0;     ///< ticks in the current state
   double t_explore = 1000;      ///< T_explore, the exploration budget [ticks]
   std::int64_t nest_ticks = 0;  ///< consecutive ticks within R_nest_reach while returning (row 3)
@@ -94,6 +96,7 @@ struct PfSight {
       nullptr;  ///< forming: the RED robot in view nearest the nest, if nearer than the target
   const Blob* my_subnest = nullptr;  ///< the nearest BLUE robot advertising me as its parent
   const Blob* guide = nullptr;       ///< follower: the CYAN robot in view fewest hops from the founder
+  const Blob* chain_end = nullptr;   ///< seek_tip: the WHITE (forming) robot in view nearest the nest
   bool recovery_near = false;        ///< an ORANGE robot within r_rec
   bool forming_in_view = false;      ///< a WHITE (subgoal-forming) robot within R_vis
   bool goal_claimed = false;    ///< single_child: a robot in view forms from the goal or has it as parent

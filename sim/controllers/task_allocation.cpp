@@ -124,6 +124,8 @@ void start_path_formation(const TaContext& c, RobotMemory& mem, double t_founder
   mem.pf.to_sighting = c.p.site_fidelity && keep.has_sighting;
   mem.pf.single_child = c.p.single_child;
   mem.pf.backoff_spot = c.p.ta_backoff_spot;
+  mem.pf.seek_tip = c.p.single_child && c.p.seek_tip;
+  mem.pf.nest_crowd_cm = c.p.nest_crowd;
   mem.trail.reset(c.in.pose.p);
 }
 
@@ -176,6 +178,39 @@ Command drive_to(const Percept& in, const Params& p, RobotMemory& mem, Vec2 poin
                                    : nav_toward(in, p, mem.nav, mem.rng, point);
   const Vec2 v = p.v_max * ((mem.nav.following > 0 ? Vec2{} : avoid.direction) + f);
   const WheelSpeeds w = wheels_from_vector(v, p, mem.turn);
+  cmd.left_cm_s = w.left_cm_s;
+  cmd.right_cm_s = w.right_cm_s;
+  return cmd;
+}
+
+// give_way [R]: the resting robots stand at 20 cm spacing around the nest, a maze with gaps
+// narrower than a robot; one pressed by a robot passing through (its proximity vector longer
+// than when it settled) backs away from it, then drive_to brings it back.
+void watch_for_pressing(const Percept& in, const Params& p, RobotMemory& mem) {
+  TaMemory& m = mem.ta;
+  const bool home = 100.0 * dist(in.pose.p, mem.start) <= p.d_arrive;
+  const auto& dirs = proximity_directions();
+  Vec2 touch;
+  for (std::size_t k = 0; k < kProximityCount; ++k) touch += in.proximity[k] * dirs[k];
+  const double len = norm(touch);
+  if (!m.settled) {
+    m.settled = home;
+    m.touch_base = len;
+    return;
+  }
+  constexpr double kPressed = 0.1;  // growth of the reading that means a robot pressing
+  if (m.give_way == 0 && p.give_way > 0.0 && len > m.touch_base + kPressed) {
+    m.give_way = static_cast<std::int64_t>(p.give_way);
+    m.give_dir = (-1.0 / len) * touch;
+    m.settled = false;
+  }
+}
+
+Command give_way(const Params& p, RobotMemory& mem) {
+  --mem.ta.give_way;
+  Command cmd;
+  cmd.led = Led::kBlack;
+  const WheelSpeeds w = wheels_from_vector(0.5 * p.v_max * mem.ta.give_dir, p, mem.turn);
   cmd.left_cm_s = w.left_cm_s;
   cmd.right_cm_s = w.right_cm_s;
   return cmd;
@@ -297,8 +332,9 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
       break;
     case TaState::kRestingTask:
       // back to its own deployment point with the field of Eq. (4)-(5), then rest, LEDs off
-      cmd = drive_to(in, p, mem, mem.start, p.d_arrive, Led::kBlack);
+      cmd = m.give_way > 0 ? give_way(p, mem) : drive_to(in, p, mem, mem.start, p.d_arrive, Led::kBlack);
       m.arrived = m.arrived || 100.0 * dist(in.pose.p, mem.start) <= p.d_arrive;
+      watch_for_pressing(in, p, mem);
       cmd = say(cmd, alloc_done_flag(id, m.state));
       break;
   }

@@ -48,6 +48,10 @@ struct TaMemory {
   std::int64_t depart_tick = 0;  ///< allocated: the tick it leaves the nest (depart_gap) [R]
   // resting task
   bool arrived = false;
+  bool settled = false;       ///< at its deployment point, touch_base taken [R]
+  double touch_base = 0;      ///< the proximity vector's length when it settled (static neighbours) [R]
+  std::int64_t give_way = 0;  ///< ticks left backing away from a robot pressing on it (give_way) [R]
+  Vec2 give_dir;              ///< the way it backs away, robot frame
   std::uint8_t last_row = 0;  ///< the TA table row that fired last (index + 1)
   std::int64_t fired_tick = -1;
 };

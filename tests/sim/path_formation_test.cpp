@@ -517,5 +517,34 @@ TEST(GuidedDeparture, ExploresAloneAfterTGuideLostOrOnSeeingTheGoal) {
   EXPECT_FALSE(lured.pf.follow_guide);
 }
 
+// R: seek_tip (task allocation). An allocated explorer that sees a robot forming the next link
+// and no free subgoal walks to it and waits tip_hover away for the free subgoal it will become.
+RobotMemory tip_seeker(bool seek_tip) {
+  RobotMemory mem = init_memory(Mode::kPathFormation, kMe, {{0.0, 0.0}, 1.0, 0.0}, kNest, Params{}, 1);
+  mem.pf.single_child = true;
+  mem.pf.seek_tip = seek_tip;
+  return mem;
+}
+
+TEST(SeekTip, WalksToTheRobotFormingTheNextLinkAndWaitsBesideIt) {
+  const Params p;
+  Reading left;
+  left.add(Led::kWhite, 9, 90, 90, 8);  // robot 9 forms from subgoal 8, on the left
+  left.add(Led::kRed, 8, 60, 95, 7);    // claimed by 9: no lure
+  RobotMemory walker = tip_seeker(true);
+  const Command walk = path_formation_step(left.percept(), p, walker);
+  EXPECT_EQ(walker.pf.state, PfState::kExploring);
+  EXPECT_GT(walk.right_cm_s, walk.left_cm_s);  // turning left, toward robot 9
+  Reading beside;
+  beside.add(Led::kWhite, 9, 0, p.tip_hover, 8);  // straight ahead, tip_hover away
+  RobotMemory waiter = tip_seeker(true);
+  const Command wait = path_formation_step(beside.percept(), p, waiter);
+  EXPECT_NEAR(wait.left_cm_s, 0.0, 1e-9);
+  EXPECT_NEAR(wait.right_cm_s, 0.0, 1e-9);
+  RobotMemory explorer = tip_seeker(false);  // without seek_tip it explores on (SPEC row 2)
+  const Command on = path_formation_step(beside.percept(), p, explorer);
+  EXPECT_GT(std::abs(on.left_cm_s) + std::abs(on.right_cm_s), 1.0);
+}
+
 }  // namespace
 }  // namespace swarmpath::sim
