@@ -5,10 +5,15 @@
 
 namespace swarmpath::sim {
 
-Avoidance diffusion(const std::array<double, kProximityCount>& proximity, const Params& p) {
+Vec2 proximity_vector(const std::array<double, kProximityCount>& proximity) {
   const auto& dirs = proximity_directions();
   Vec2 s;
   for (std::size_t k = 0; k < kProximityCount; ++k) s += proximity[k] * dirs[k];
+  return s;
+}
+
+Avoidance diffusion(const std::array<double, kProximityCount>& proximity, const Params& p) {
+  const Vec2 s = proximity_vector(proximity);
   const double len = norm(s);
   if (len == 0.0) return {};  // nothing in range: straight ahead (angle 0, length 0)
   if (len < p.diff_delta && std::fabs(angle_of(s)) <= deg2rad(p.diff_angle)) return {};

@@ -16,7 +16,10 @@ struct Avoidance {
   bool collision = false;
 };
 
-/// S = sum_i r_i (cos phi_i, sin phi_i); clear (D = (1, 0)) when the angle of S lies within
+/// S = sum_i r_i (cos phi_i, sin phi_i) over the 24 proximity sensors (SPEC §2.1), robot frame.
+Vec2 proximity_vector(const std::array<double, kProximityCount>& proximity);
+
+/// S as above; clear (D = (1, 0)) when the angle of S lies within
 /// +-diff_angle and |S| < diff_delta, otherwise D = -S/|S| and collision = true.
 Avoidance diffusion(const std::array<double, kProximityCount>& proximity, const Params& p);
 

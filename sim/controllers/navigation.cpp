@@ -57,8 +57,7 @@ bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, c
     if (nav.side == 0) {
       // keep going the way the robot faces: the obstacle on the side that needs the smaller turn
       // (the sensed obstacle to the left of the heading -> keep it on the left), ties at random
-      Vec2 s;
-      for (std::size_t k = 0; k < kProximityCount; ++k) s += in.proximity[k] * dirs[k];
+      const Vec2 s = proximity_vector(in.proximity);
       nav.side = s.y > 1e-9 ? -1 : s.y < -1e-9 ? 1 : (rng.bernoulli(0.5) ? 1 : -1);
     }
     nav.following = static_cast<std::int64_t>(p.t_follow);
@@ -71,9 +70,7 @@ bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, c
 
 Vec2 follow_edge(const Percept& in, int side) {
   constexpr double kSetPoint = 0.3;  // proximity magnitude of about 4 cm on two sensors
-  const auto& dirs = proximity_directions();
-  Vec2 s;
-  for (std::size_t k = 0; k < kProximityCount; ++k) s += in.proximity[k] * dirs[k];
+  const Vec2 s = proximity_vector(in.proximity);
   const double mag = norm(s);
   if (mag == 0.0) return unit(-side * deg2rad(45.0));
   const Vec2 away = (-1.0 / mag) * s;

@@ -376,12 +376,12 @@ Command stop(PfState s) {
 
 // Guided departure [R] (task allocation): an allocated robot's first trip follows the CYAN
 // lights, the founder going back to the goal and the robots following it, keeping guide_gap from
-// the one fewest hops from the founder (ties: farthest from the nest); the goal or a RED subgoal in view ends
-// it, and so does seeing no guide for T_guide_lost. Following does not spend the budget (it is travel, like
-// row 2's).
+// the one fewest hops from the founder (ties: farthest from the nest); the goal, a free RED subgoal or a
+// forming robot in view ends it, and so does seeing no guide for T_guide_lost. Following does not spend the
+// budget (it is travel, like row 2's).
 bool follow_guide(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight, Command& cmd) {
   PfMemory& m = mem.pf;
-  if (sight.lure != nullptr || sight.chain_end != nullptr) {
+  if (sight.lure != nullptr || sight.forming_link != nullptr) {
     m.follow_guide = false;
     return false;
   }
@@ -410,13 +410,13 @@ bool follow_guide(const Percept& in, const Params& p, RobotMemory& mem, const Pf
 // seek_tip [R]: an allocated explorer that sees a robot forming the next link (WHITE) and no
 // free subgoal walks to it and waits tip_hover from it for the RED it becomes, which lures it
 // (row 1). Waiting spends the budget.
-Command wait_by_chain_end(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
+Command wait_by_forming_robot(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
   PfMemory& m = mem.pf;
   m.to_sighting = false;
   const Avoidance avoid = diffusion(in.proximity, p);
   Vec2 v = (avoid.collision ? avoid.direction : Vec2{}) + sight.repulsion;
-  const double gap = std::clamp((sight.chain_end->distance_cm - p.tip_hover) / p.tip_hover, -1.0, 1.0);
-  if (gap > 0.0) v += gap * sight.chain_end->dir;
+  const double gap = std::clamp((sight.forming_link->distance_cm - p.tip_hover) / p.tip_hover, -1.0, 1.0);
+  if (gap > 0.0) v += gap * sight.forming_link->dir;
   return drive(p, mem, p.v_max * v, PfState::kExploring);
 }
 
@@ -431,7 +431,7 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
   if (m.follow_guide) {
     if (Command cmd; follow_guide(in, p, mem, sight, cmd)) return cmd;
   }
-  if (sight.lure == nullptr && sight.chain_end != nullptr) return wait_by_chain_end(in, p, mem, sight);
+  if (sight.lure == nullptr && sight.forming_link != nullptr) return wait_by_forming_robot(in, p, mem, sight);
   if (m.to_sighting) ++m.travel_ticks;
   if (m.to_sighting && (sight.lure != nullptr || dist(in.pose.p, m.sighting) < 0.5)) {
     m.to_sighting = false;
@@ -590,7 +590,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   // kMaxGuideHops), so that hop counts only go down and no followers follow each other in a loop
   int guide_hops = m.guide_hops - 1;
   double guide_far = -1.0;
-  double end_to_nest = 1e18;
+  double forming_to_nest = 1e18;
   for (const Blob& b : in.blobs) {
     if (m.follow_guide && b.color == Led::kCyan && b.emitter >= 0) {
       // the light's tag is its hop count to the founder (the founder at the nest advertises none)
@@ -631,12 +631,12 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
       sight.my_subnest = &b;
     }
     if (b.color == Led::kWhite && b.emitter >= 0) sight.forming_in_view = true;
-    // R (seek_tip): the chain's end nearest the nest, where the next free subgoal will stand
+    // R (seek_tip): the forming (WHITE) robot nearest the nest, where the next free subgoal will stand
     if (m.seek_tip && b.color == Led::kWhite && b.emitter >= 0) {
       const double to_nest = dist(blob_position(in.pose, b), nest);
-      if (to_nest < end_to_nest) {
-        end_to_nest = to_nest;
-        sight.chain_end = &b;
+      if (to_nest < forming_to_nest) {
+        forming_to_nest = to_nest;
+        sight.forming_link = &b;
       }
     }
     // R: recovery robots repel everyone; explorers keep clear of path robots too (label e)

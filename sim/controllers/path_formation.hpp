@@ -94,11 +94,11 @@ struct PfSight {
   const Blob* lure = nullptr;      ///< the goal, or else the nearest RED robot, within R_vis
   const Blob* red_nearer_nest =
       nullptr;  ///< forming: the RED robot in view nearest the nest, if nearer than the target
-  const Blob* my_subnest = nullptr;  ///< the nearest BLUE robot advertising me as its parent
-  const Blob* guide = nullptr;       ///< follower: the CYAN robot in view fewest hops from the founder
-  const Blob* chain_end = nullptr;   ///< seek_tip: the WHITE (forming) robot in view nearest the nest
-  bool recovery_near = false;        ///< an ORANGE robot within r_rec
-  bool forming_in_view = false;      ///< a WHITE (subgoal-forming) robot within R_vis
+  const Blob* my_subnest = nullptr;    ///< the nearest BLUE robot advertising me as its parent
+  const Blob* guide = nullptr;         ///< follower: the CYAN robot in view fewest hops from the founder
+  const Blob* forming_link = nullptr;  ///< seek_tip: the WHITE (forming) robot in view nearest the nest
+  bool recovery_near = false;          ///< an ORANGE robot within r_rec
+  bool forming_in_view = false;        ///< a WHITE (subgoal-forming) robot within R_vis
   bool goal_claimed = false;    ///< single_child: a robot in view forms from the goal or has it as parent
   bool may_form = true;         ///< this tick's draw of p_form (one at a time)
   Vec2 repulsion;               ///< R (SPEC §2.1), robot frame

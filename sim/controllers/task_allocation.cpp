@@ -189,9 +189,7 @@ Command drive_to(const Percept& in, const Params& p, RobotMemory& mem, Vec2 poin
 void watch_for_pressing(const Percept& in, const Params& p, RobotMemory& mem) {
   TaMemory& m = mem.ta;
   const bool home = 100.0 * dist(in.pose.p, mem.start) <= p.d_arrive;
-  const auto& dirs = proximity_directions();
-  Vec2 touch;
-  for (std::size_t k = 0; k < kProximityCount; ++k) touch += in.proximity[k] * dirs[k];
+  const Vec2 touch = proximity_vector(in.proximity);
   const double len = norm(touch);
   if (!m.settled) {
     m.settled = home;

@@ -311,19 +311,30 @@ TEST(TaRun, TheFounderAllocatesAndTheAllocatedRobotsFormThePath) {
   EXPECT_LE(m.path_robots, m.allocated);  // only allocated robots form it
 }
 
-// allocated robots that ever stood as a RED subgoal (or further along the chain's states)
-int allocated_ever_in_chain(const Params& p, const Scenario& s, std::uint64_t seed, Metrics& m) {
-  std::vector<std::uint8_t> chained(static_cast<std::size_t>(s.robots), 0);
+// Per robot, the OR over every tick of a task-allocation run of `flags(memory)` (bit flags).
+template <class Flags>
+std::vector<std::uint8_t> flags_ever(const Params& p, const Scenario& s, std::uint64_t seed, Flags flags,
+                                     Metrics& m) {
+  std::vector<std::uint8_t> ever(static_cast<std::size_t>(s.robots), 0);
   m = run(p, s, Mode::kTaskAllocation, seed, [&](const World& w) {
-    for (std::size_t i = 0; i < w.memory.size(); ++i) {
-      const RobotMemory& r = w.memory[i];
-      if (r.ta.state == TaState::kPathFormation && r.pf.state == PfState::kSubgoal) chained[i] = 1;
-    }
+    for (std::size_t i = 0; i < w.memory.size(); ++i) ever[i] |= flags(w.memory[i]);
     return false;
   });
+  return ever;
+}
+
+int robots_with(const std::vector<std::uint8_t>& ever, std::uint8_t flag) {
   int n = 0;
-  for (const std::uint8_t v : chained) n += v;
+  for (const std::uint8_t v : ever) n += (v & flag) != 0 ? 1 : 0;
   return n;
+}
+
+// allocated robots that ever stood as a RED subgoal
+int allocated_ever_in_chain(const Params& p, const Scenario& s, std::uint64_t seed, Metrics& m) {
+  const auto chained = [](const RobotMemory& r) -> std::uint8_t {
+    return r.ta.state == TaState::kPathFormation && r.pf.state == PfState::kSubgoal ? 1 : 0;
+  };
+  return robots_with(flags_ever(p, s, seed, chained, m), 1);
 }
 
 // R: single_child + ta_backoff_spot + depart_gap (docs/CHOICES.md). Allocated robots arriving
@@ -357,21 +368,16 @@ TEST(TaRun, OneChainNoSideBranches) {
 TEST(TaRun, AllocatedCountsTheRobotsOfEveryFounder) {
   const Scenario s = env1_with(70);
   const Params p = load_params(test::source_path("genomes/paper.toml"));
-  std::vector<std::uint8_t> initiated(70, 0);
-  int founders = 0;
-  std::vector<std::uint8_t> founded(70, 0);
-  const Metrics m = run(p, s, Mode::kTaskAllocation, 3, [&](const World& w) {
-    for (std::size_t i = 0; i < w.memory.size(); ++i) {
-      if (w.memory[i].ta.state == TaState::kPathFormation) initiated[i] = 1;
-      if (w.memory[i].ta.state == TaState::kGoalFounder && founded[i] == 0) {
-        founded[i] = 1;
-        ++founders;
-      }
-    }
-    return false;
-  });
-  int count = 0;
-  for (const std::uint8_t v : initiated) count += v;
+  constexpr std::uint8_t kInitiated = 1;
+  constexpr std::uint8_t kFounder = 2;
+  const auto roles = [](const RobotMemory& r) -> std::uint8_t {
+    return (r.ta.state == TaState::kPathFormation ? kInitiated : 0) |
+           (r.ta.state == TaState::kGoalFounder ? kFounder : 0);
+  };
+  Metrics m;
+  const std::vector<std::uint8_t> ever = flags_ever(p, s, 3, roles, m);
+  const int count = robots_with(ever, kInitiated);
+  const int founders = robots_with(ever, kFounder);
   EXPECT_GT(founders, 1);  // the case this test is for: duplicate founders
   EXPECT_EQ(m.allocated, count);
   EXPECT_NEAR(m.resource_reduction_pct, 100.0 * (70 - count) / 70.0, 1e-9);
@@ -386,17 +392,13 @@ TEST(TaRun, ALateFounderDefersToTheOneAlreadyAllocating) {
   ASSERT_TRUE(p.founder_seniority);
   const auto allocated_and_n = [&](const Params& q) {
     int n = 0;
-    int founders = 0;
-    std::vector<std::uint8_t> founded(70, 0);
-    const Metrics m = run(q, s, Mode::kTaskAllocation, 3, [&](const World& w) {
-      for (std::size_t i = 0; i < w.memory.size(); ++i) {
-        if (w.memory[i].ta.state != TaState::kGoalFounder || founded[i] != 0) continue;
-        founded[i] = 1;
-        ++founders;
-        n = std::max(n, w.memory[i].ta.n);
-      }
-      return false;
-    });
+    const auto founder = [&](const RobotMemory& r) -> std::uint8_t {
+      if (r.ta.state != TaState::kGoalFounder) return 0;
+      n = std::max(n, r.ta.n);
+      return 1;
+    };
+    Metrics m;
+    const int founders = robots_with(flags_ever(q, s, 3, founder, m), 1);
     EXPECT_GT(founders, 1);
     return std::pair{m.allocated, n};
   };
