@@ -152,6 +152,9 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
         << length(m.opt1_path_length_tu) << "\n";
     out << "  T_form        " << m.ticks_to_form << " ticks, final path " << length(m.path_length_tu) << " ("
         << m.path_robots << " robots)\n";
+    out << "  links         " << m.chain.subgoals_laid << " subgoals laid, " << m.chain.subgoals_laid_goalward
+        << " goal-ward of their parent; " << m.chain.forming_from_goal_side
+        << " robots began forming from the goal side of their target\n";
     if (ta) {
       out << "  allocation    "
           << (m.allocated >= 0

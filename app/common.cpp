@@ -48,6 +48,9 @@ void add_path_json(nlohmann::ordered_json& j, const sim::Metrics& m) {
   j["path_robots"] = m.path_robots;
   j["ticks_to_chain"] = tick_or_null(m.ticks_to_chain);
   j["ticks_to_opt1"] = tick_or_null(m.ticks_to_opt1);
+  j["subgoals_laid"] = m.chain.subgoals_laid;
+  j["subgoals_laid_goalward"] = m.chain.subgoals_laid_goalward;
+  j["forming_from_goal_side"] = m.chain.forming_from_goal_side;
   if (m.allocated >= 0 || m.ticks_to_allocate >= 0 || !std::isnan(m.resource_reduction_pct)) {
     j["allocated"] = m.allocated;
     j["resource_reduction_pct"] = tu_or_null(m.resource_reduction_pct);

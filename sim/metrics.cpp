@@ -11,12 +11,14 @@ void MetricsAccumulator::begin(int robots) {
   ever_allocated_count_ = 0;
   distance_m_ = 0;
   path_ = PathObserver{};
+  chain_.begin(robots);
 }
 
 void MetricsAccumulator::observe(const Scenario& s, const World& w) {
   if (w.mode != Mode::kPathFormation && w.mode != Mode::kTaskAllocation) return;
   watch_path_ = true;
   path_.observe(s, w);
+  chain_.observe(s, w);
   if (w.mode != Mode::kTaskAllocation) return;
   // the robots allocated: every robot that has entered INITIATE_TASK so far, whichever founder
   // (duplicate founders each allocate) and the founders themselves
@@ -49,6 +51,7 @@ Metrics MetricsAccumulator::finish(std::int64_t ticks, double dt, std::uint64_t 
   m.opt1_path = path_.opt1_path();
   m.final_path = path_.final_path();
   m.success = path_.complete();
+  m.chain = chain_.stats();
   m.ticks_to_chain = m.subgoal_path.tick;
   m.ticks_to_opt1 = m.opt1_path.tick;
   // a path can complete before any founder broadcasts DONE: the robots that initiated the task count

@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "chain_stats.hpp"
 #include "path_metrics.hpp"
 
 namespace swarmpath::sim {
@@ -33,6 +34,7 @@ struct Metrics {
   double resource_reduction_pct = std::numeric_limits<double>::quiet_NaN();  ///< (N - allocated)/N x 100
   std::int64_t ticks_to_allocate = -1;               ///< T_alloc: DONE first broadcast
   PathSnapshot subgoal_path, opt1_path, final_path;  ///< for pictures
+  ChainStats chain;                                  ///< how the chain's links were laid (diagnostics)
 };
 
 /// Accumulates per-tick observations; finish() fills the final fields.
@@ -56,6 +58,7 @@ class MetricsAccumulator {
   double distance_m_ = 0;
   bool watch_path_ = false;
   PathObserver path_;
+  ChainStatsObserver chain_;
   std::int64_t alloc_tick_ = -1;
   std::vector<std::uint8_t> ever_allocated_;  ///< per robot: has entered INITIATE_TASK
   int ever_allocated_count_ = 0;

@@ -169,8 +169,13 @@ TEST(CliTable, OutputIsIdenticalAtOneAndTwoThreads) {
   for (const auto& run : j["runs"]) {
     for (const char* key :
          {"scenario", "robots", "seed", "mode", "success", "ticks_to_form", "path_length_tu",
-          "subgoal_path_length_tu", "opt1_path_length_tu", "astar8_tu", "path_robots"}) {
+          "subgoal_path_length_tu", "opt1_path_length_tu", "astar8_tu", "path_robots", "subgoals_laid",
+          "subgoals_laid_goalward", "forming_from_goal_side"}) {
       EXPECT_TRUE(run.contains(key)) << key;
+    }
+    // every robot of a complete path was laid as a subgoal once at least
+    if (run["success"].get<bool>()) {
+      EXPECT_GE(run["subgoals_laid"].get<int>(), run["path_robots"].get<int>());
     }
   }
   EXPECT_TRUE(j["summary"].contains("success_rate_pf"));
