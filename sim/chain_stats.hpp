@@ -5,9 +5,6 @@
 // another's without tracing it.
 #pragma once
 
-#include <cstdint>
-#include <vector>
-
 #include "scenario.hpp"
 #include "world.hpp"
 
@@ -19,18 +16,15 @@ struct ChainStats {
   int forming_from_goal_side = 0;  ///< robots that began forming farther from the nest than their target
 };
 
-/// Watches the path-formation states after every tick.
+/// Watches the path-formation rows that fire (PfMemory::last_row, fired_tick) after every tick.
 class ChainStatsObserver {
  public:
-  void begin(int robots);
-
   /// Call after every tick of a path-formation or task-allocation world.
   void observe(const Scenario& s, const World& w);
 
   const ChainStats& stats() const { return stats_; }
 
  private:
-  std::vector<std::uint8_t> previous_;  ///< per robot: its PfState after the last tick
   ChainStats stats_;
 };
 

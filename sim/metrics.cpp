@@ -11,7 +11,7 @@ void MetricsAccumulator::begin(int robots) {
   ever_allocated_count_ = 0;
   distance_m_ = 0;
   path_ = PathObserver{};
-  chain_.begin(robots);
+  chain_ = ChainStatsObserver{};
 }
 
 void MetricsAccumulator::observe(const Scenario& s, const World& w) {

@@ -2,22 +2,12 @@
 #include "path_metrics.hpp"
 
 #include <algorithm>
-#include <string_view>
 
 namespace swarmpath::sim {
 
 namespace {
 
 bool is_robot(const World& w, int id) { return id >= 0 && id < w.robot_count(); }
-
-// index + 1 of the table row called `name`, as stored in PfMemory::last_row
-std::uint8_t row_number(std::string_view name) {
-  const auto rows = pf_transitions();
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (rows[i].row == name) return static_cast<std::uint8_t>(i + 1);
-  }
-  return 0;
-}
 
 }  // namespace
 
@@ -60,10 +50,10 @@ PathSnapshot snapshot(const Scenario& s, const World& w, const std::vector<int>&
 
 void PathObserver::observe(const Scenario& s, const World& w) {
   if (complete()) return;
-  static const std::uint8_t kChainRow = row_number("#9a");  // a subgoal sees the nest
-  static const std::uint8_t kOpt1Row = row_number("#10");   // optimisation 1 done
-  static const std::uint8_t kDoneRow = row_number("#12");   // optimisation 2 done
-  const std::int64_t fired = w.tick - 1;                    // rows fired during the tick just simulated
+  static const std::uint8_t kChainRow = pf_row_number("#9a");  // a subgoal sees the nest
+  static const std::uint8_t kOpt1Row = pf_row_number("#10");   // optimisation 1 done
+  static const std::uint8_t kDoneRow = pf_row_number("#12");   // optimisation 2 done
+  const std::int64_t fired = w.tick - 1;                       // rows fired during the tick just simulated
   for (int id = 0; id < w.robot_count(); ++id) {
     const PfMemory& m = w.memory[static_cast<std::size_t>(id)].pf;
     if (m.fired_tick != fired) continue;

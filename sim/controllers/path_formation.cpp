@@ -578,6 +578,14 @@ Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
 
 std::span<const PfTransition> pf_transitions() { return kTable; }
 
+std::uint8_t pf_row_number(std::string_view row) {
+  const auto rows = pf_transitions();
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (rows[i].row == row) return static_cast<std::uint8_t>(i + 1);
+  }
+  return 0;
+}
+
 void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfSight& sight) {
   sight = PfSight{};
   Claims claims;

@@ -131,6 +131,9 @@ struct PfTransition {
 /// The table, in SPEC §2.3's order; the first row of the current state whose guard holds fires.
 std::span<const PfTransition> pf_transitions();
 
+/// Index + 1 of the table row called `row` (e.g. "#9a"), as PfMemory::last_row stores it; 0: none.
+std::uint8_t pf_row_number(std::string_view row);
+
 /// Reads the camera into `sight` and updates the tracked references (debounce, last positions).
 void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfSight& sight);
 

@@ -3,6 +3,8 @@
 // forming from the goal side of their target.
 #include "sim/chain_stats.hpp"
 
+#include <string_view>
+
 #include <gtest/gtest.h>
 
 #include "sim/controllers/path_formation.hpp"
@@ -27,23 +29,35 @@ struct ChainFixture : ::testing::Test {
   ChainStatsObserver obs;
 
   void SetUp() override {
-    obs.begin(3);
     w.memory[0].pf.state = PfState::kSubgoal;
     w.memory[0].pf.parent = ref(kGoalEmitter, s.goal);
-    obs.observe(s, w);  // robot 0 did not turn RED under observation: not counted
+    tick();  // robot 0 did not turn RED under observation: not counted
   }
 
-  // robot i takes robot 0 as its target at `at`, then turns RED at `laid`
+  // one tick: the rows set by the caller fired in it
+  void tick() {
+    ++w.tick;
+    obs.observe(s, w);
+  }
+
+  void fire(int i, std::string_view row, PfState to) {
+    PfMemory& m = w.memory[static_cast<std::size_t>(i)].pf;
+    m.state = to;
+    m.last_row = pf_row_number(row);
+    m.fired_tick = w.tick;
+  }
+
+  // robot i takes robot 0 as its target at `at` (row 1), then turns RED at `laid` (row 5)
   void form(int i, Vec2 at, Vec2 laid) {
-    auto& m = w.memory[static_cast<std::size_t>(i)].pf;
+    PfMemory& m = w.memory[static_cast<std::size_t>(i)].pf;
     w.positions[static_cast<std::size_t>(i)] = at;
-    m.state = PfState::kSubgoalForming;
     m.target = ref(0, w.positions[0]);
-    obs.observe(s, w);
+    fire(i, "#1", PfState::kSubgoalForming);
+    tick();
     w.positions[static_cast<std::size_t>(i)] = laid;
-    m.state = PfState::kSubgoal;
     m.parent = m.target;
-    obs.observe(s, w);
+    fire(i, "#5", PfState::kSubgoal);
+    tick();
   }
 };
 
