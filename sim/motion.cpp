@@ -20,6 +20,15 @@ Avoidance diffusion(const std::array<double, kProximityCount>& proximity, const 
   return {(-1.0 / len) * s, true};
 }
 
+Command drive_command(Vec2 v_cm_s, const Params& p, TurnMode& turn, Led led) {
+  const WheelSpeeds w = wheels_from_vector(v_cm_s, p, turn);
+  Command cmd;
+  cmd.left_cm_s = w.left_cm_s;
+  cmd.right_cm_s = w.right_cm_s;
+  cmd.led = led;
+  return cmd;
+}
+
 Vec2 field_toward(const Pose& pose, Vec2 target) {
   const Vec2 d = target - pose.p;
   const double len = norm(d);

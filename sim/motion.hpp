@@ -5,6 +5,7 @@
 
 #include <array>
 
+#include "drive.hpp"
 #include "params.hpp"
 #include "percept.hpp"
 #include "rng.hpp"
@@ -22,6 +23,10 @@ Vec2 proximity_vector(const std::array<double, kProximityCount>& proximity);
 /// S as above; clear (D = (1, 0)) when the angle of S lies within
 /// +-diff_angle and |S| < diff_delta, otherwise D = -S/|S| and collision = true.
 Avoidance diffusion(const std::array<double, kProximityCount>& proximity, const Params& p);
+
+/// The command that drives along `v_cm_s` (robot frame, cm/s) by the wheel mapping of SPEC §1.2
+/// (`turn` keeps its hysteresis), showing `led`.
+Command drive_command(Vec2 v_cm_s, const Params& p, TurnMode& turn, Led led);
 
 /// Robot-frame unit vector toward `target` (Eq. 4-5 with atan2): F_toward; -F is F_away.
 /// Zero when the robot is on the target.

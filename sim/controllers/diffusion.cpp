@@ -11,13 +11,8 @@ Command diffusion_step(const Percept& in, const Params& p, RobotMemory& mem) {
   const Avoidance avoid = diffusion(in.proximity, p);
   const Vec2 walk = in.pose.to_local(mem.walk_dir);
   const Vec2 v = p.v_max * (avoid.direction + p.w_rw * walk);
-  const WheelSpeeds w = wheels_from_vector(v, p, mem.turn);
   mem.state = avoid.collision ? 1 : 0;
-  Command cmd;
-  cmd.left_cm_s = w.left_cm_s;
-  cmd.right_cm_s = w.right_cm_s;
-  cmd.led = Led::kGreen;
-  return cmd;
+  return drive_command(v, p, mem.turn, Led::kGreen);
 }
 
 }  // namespace swarmpath::sim

@@ -360,12 +360,7 @@ const std::array<PfTransition, 21> kTable{{
 // ---- behaviours, one per state ----
 
 Command drive(const Params& p, RobotMemory& mem, Vec2 v_cm_s, PfState s) {
-  const WheelSpeeds w = wheels_from_vector(v_cm_s, p, mem.turn);
-  Command cmd;
-  cmd.left_cm_s = w.left_cm_s;
-  cmd.right_cm_s = w.right_cm_s;
-  cmd.led = led_of(s);
-  return cmd;
+  return drive_command(v_cm_s, p, mem.turn, led_of(s));
 }
 
 Command stop(PfState s) {

@@ -177,10 +177,7 @@ Command drive_to(const Percept& in, const Params& p, RobotMemory& mem, Vec2 poin
   const Vec2 f = point == mem.nest ? nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest)
                                    : nav_toward(in, p, mem.nav, mem.rng, point);
   const Vec2 v = p.v_max * ((mem.nav.following > 0 ? Vec2{} : avoid.direction) + f);
-  const WheelSpeeds w = wheels_from_vector(v, p, mem.turn);
-  cmd.left_cm_s = w.left_cm_s;
-  cmd.right_cm_s = w.right_cm_s;
-  return cmd;
+  return drive_command(v, p, mem.turn, led);
 }
 
 // give_way [R]: the resting robots stand at 20 cm spacing around the nest, a maze with gaps
@@ -206,12 +203,7 @@ void watch_for_pressing(const Percept& in, const Params& p, RobotMemory& mem) {
 
 Command give_way(const Params& p, RobotMemory& mem) {
   --mem.ta.give_way;
-  Command cmd;
-  cmd.led = Led::kBlack;
-  const WheelSpeeds w = wheels_from_vector(0.5 * p.v_max * mem.ta.give_dir, p, mem.turn);
-  cmd.left_cm_s = w.left_cm_s;
-  cmd.right_cm_s = w.right_cm_s;
-  return cmd;
+  return drive_command(0.5 * p.v_max * mem.ta.give_dir, p, mem.turn, Led::kBlack);
 }
 
 bool joined(std::uint8_t founder, std::span<const RabMessage> inbox) {
