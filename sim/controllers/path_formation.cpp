@@ -744,6 +744,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
       mem.trail.reset(in.pose.p);
       m.to_sighting = p.site_fidelity && m.has_sighting;
       m.travel_ticks = 0;
+      m.trip_start = in.tick;
     }
   }
   ++m.t_state;

@@ -78,6 +78,7 @@ struct PfMemory {
   bool sighted_this_trip = false;
   bool to_sighting = false;        ///< exploring: first travelling back to the sighting (site fidelity)
   std::int64_t travel_ticks = 0;   ///< exploring: ticks spent travelling to the sighting (not budget)
+  std::int64_t trip_start = 0;     ///< the tick this exploration trip began (TA t_source = elapsed)
   bool guide = false;              ///< TA founder leading the allocated robots to the goal (LED CYAN) [R]
   bool follow_guide = false;       ///< allocated robot following the CYAN guides on its first trip [R]
   std::int64_t guide_unseen = 0;   ///< consecutive ticks a follower has seen no guide

@@ -107,8 +107,9 @@ bool told_to_rest(const TaContext& c) {  // T6, TA d
 
 void become_founder(const TaContext& c, RobotMemory& mem) {
   // t: the founder's current minimum exploring time (default) or the ticks of this trip [s]
-  const double t_ticks =
-      c.p.t_source == TSource::kBudget ? mem.pf.t_explore : static_cast<double>(mem.pf.t_state);
+  const double t_ticks = c.p.t_source == TSource::kBudget
+                             ? mem.pf.t_explore
+                             : static_cast<double>(c.in.tick - mem.pf.trip_start);
   mem.ta.t_founder_s = t_ticks / 10.0;
   mem.ta.n = robots_needed(mem.ta.t_founder_s, c.p.v_max, c.p.r_vis, delta_for(c.p, mem.env_class),
                            static_cast<int>(c.p.n_min), c.swarm);
@@ -122,6 +123,7 @@ void start_path_formation(const TaContext& c, RobotMemory& mem, double t_founder
   mem.pf.sighting = keep.sighting;
   mem.pf.has_sighting = keep.has_sighting;
   mem.pf.to_sighting = c.p.site_fidelity && keep.has_sighting;
+  mem.pf.trip_start = c.in.tick;
   mem.pf.single_child = c.p.single_child;
   mem.pf.backoff_spot = c.p.ta_backoff_spot;
   mem.pf.seek_tip = c.p.single_child && c.p.seek_tip;

@@ -85,6 +85,26 @@ TEST(TaTable, T2AScoutThatFindsTheGoalBecomesTheFounder) {  // TA c
   EXPECT_EQ(mem.ta.state, TaState::kGoalFounder);
 }
 
+// SPEC §2.7, Eq. (1): t is the founder's budget by default; with t_source = elapsed, the ticks of
+// the whole trip (from leaving the nest), not the ticks of its current path-formation state
+TEST(TaTable, T2TheFoundersTIsItsBudgetOrItsWholeTrip) {
+  Reading r;
+  r.see(Led::kYellow, kGoalEmitter, 25);  // at tick 500
+  RobotMemory budget = robot(TaState::kScout);
+  budget.pf.t_explore = 1500;
+  EXPECT_EQ(fire(budget, r), "T2");
+  EXPECT_DOUBLE_EQ(budget.ta.t_founder_s, 150.0);
+
+  Params p;
+  p.t_source = TSource::kElapsed;
+  RobotMemory trip = robot(TaState::kScout);
+  trip.pf.trip_start = 120;
+  trip.pf.t_state = 30;  // e.g. lured for the last 30 ticks
+  EXPECT_EQ(fire(trip, r, p), "T2");
+  EXPECT_DOUBLE_EQ(trip.ta.t_founder_s, 38.0);  // (500 - 120) ticks
+  EXPECT_EQ(trip.ta.n, robots_needed(38.0, p.v_max, p.r_vis, p.delta_open, static_cast<int>(p.n_min), 100));
+}
+
 TEST(TaTable, T2NotOnceTheAllocationIsOver) {
   RobotMemory mem = robot(TaState::kScout);
   Reading r;
