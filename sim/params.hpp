@@ -91,11 +91,13 @@ struct Params {
   double give_way = 20;          ///< TA: a resting robot pressed by another backs away this many ticks, then
                                  ///< returns (0: never) [R]
   double depart_gap = 50;        ///< TA: ticks between departures, in ACK order (0: all at once) [R]
-  bool seek_tip = true;     ///< TA: an allocated explorer that sees a robot forming a subgoal and no free one
-                            ///< waits beside it for the free subgoal it becomes [R]
-  double tip_hover = 50;    ///< TA, seek_tip: distance at which it waits by the forming robot [cm]
-  double nest_crowd = 200;  ///< TA: within this of the nest (the resting and waiting robots) an allocated
-                            ///< robot does not edge-follow, it slides past robots instead [cm] [R]
+  bool seek_tip = true;   ///< TA: an allocated explorer that sees a robot forming a subgoal and no free one
+                          ///< waits beside it for the free subgoal it becomes [R]
+  double tip_hover = 50;  ///< TA, seek_tip: distance at which it waits by the forming robot [cm]
+  bool chain_bypass = false;  ///< TA, single_child: a subgoal that sees its parent's parent within
+                              ///< d_sub + 10 cm takes it as parent; the skipped robot leaves the chain [R]
+  double nest_crowd = 200;    ///< TA: within this of the nest (the resting and waiting robots) an allocated
+                              ///< robot does not edge-follow, it slides past robots instead [cm] [R]
   bool founder_seniority = true;  ///< TA T8: a founder that has ACKed robots outranks one that has not [R]
   double nest_wait = 0.5;         ///< TA: decision makers and robots waiting to leave stop this fraction of
                                   ///< R_nest_reach from the nest [R]

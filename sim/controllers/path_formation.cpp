@@ -252,6 +252,10 @@ bool sees_nest(const PfContext& c) { return c.sight.nest != nullptr; }  // row 9
 
 bool sees_own_sub_nest(const PfContext& c) { return c.sight.my_subnest != nullptr; }  // row 9b, label g
 
+bool sees_grandparent(const PfContext& c) { return c.sight.grandparent != nullptr; }  // row 15 [R]
+
+bool bypassed(const PfContext& c) { return c.sight.bypassed; }  // row 16 [R]
+
 bool alignment_done(const PfContext& c) {  // rows 10 and 12
   const bool both_seen = c.m.parent.visible && c.m.child.visible;
   // out of time: done, provided both references are in view (else first back to the start)
@@ -328,10 +332,21 @@ void child_is_nest(const PfContext& c, PfMemory& m) { m.child = follow(*c.sight.
 
 void child_is_sub_nest(const PfContext& c, PfMemory& m) { m.child = follow(*c.sight.my_subnest, c.in.pose); }
 
+void grandparent_becomes_parent(const PfContext& c, PfMemory& m) {  // row 15 [R]
+  m.parent = follow(*c.sight.grandparent, c.in.pose);
+}
+
+// row 16 [R]: back to the nest along its way out, then out again to the sighting, the RED robot
+// nearest the nest that it saw (pf_perceive): its next approach to the tip is from the nest side
+void leave_chain(const PfContext&, PfMemory& m) {
+  m.parent = Tracked{};
+  m.target = Tracked{};
+}
+
 // clang-format off
 // SPEC §2.3, in its order (paper Table 2 labels where they exist). For each state the first row
 // whose guard holds fires; rows 6, 8, 9 and 13 are split where the SPEC lists two conditions.
-const std::array<PfTransition, 21> kTable{{
+const std::array<PfTransition, 23> kTable{{
   {PfState::kExploring,      found_goal_or_subgoal,        PfState::kSubgoalForming, take_target,           "#1",  "c"},
   {PfState::kExploring,      exploration_time_over,        PfState::kReturnToNest,   nullptr,               "#2",  "b"},
   {PfState::kReturnToNest,   reached_nest,                 PfState::kResting,        nullptr,               "#3",  "d"},
@@ -353,6 +368,8 @@ const std::array<PfTransition, 21> kTable{{
   {PfState::kOpt2,           reference_lost,               PfState::kRecovery,       nullptr,               "#13b","f"},
   {PfState::kSubNest,        orphaned,                     PfState::kSubgoal,        nullptr,               "#14a",""},
   {PfState::kPathDone,       orphaned,                     PfState::kSubgoal,        nullptr,               "#14b",""},
+  {PfState::kSubgoal,        sees_grandparent,             PfState::kSubgoal,        grandparent_becomes_parent, "#15", ""},
+  {PfState::kSubgoal,        bypassed,                     PfState::kReturnToNest,   leave_chain,           "#16", ""},
 }};
 
 // clang-format on
@@ -581,6 +598,34 @@ std::uint8_t pf_row_number(std::string_view row) {
   return 0;
 }
 
+namespace {
+
+// chain_bypass [R]: a RED subgoal whose parent's parent (the RED robot the parent's light names, or
+// the goal) is in view within d_sub + 10 cm skips the parent; a RED subgoal that nobody claims while
+// another RED robot names its parent as parent (its former child, which skipped it) leaves the chain
+void perceive_bypass(const Percept& in, const Params& p, const PfMemory& m, const Claims& claims,
+                     PfSight& sight) {
+  if (!m.parent.valid() || !m.parent.visible) return;
+  int grandparent = kNobody;
+  for (const Blob& b : in.blobs) {
+    if (b.emitter == m.parent.id && b.color == Led::kRed) grandparent = b.tag;
+  }
+  const bool claimed = claims.has(in.id);
+  for (const Blob& b : in.blobs) {
+    if (grandparent != kNobody && b.emitter == grandparent && b.distance_cm <= p.d_sub + 10.0 &&
+        (b.color == Led::kRed || b.emitter == kGoalEmitter)) {
+      sight.grandparent = &b;
+    }
+    // a sibling: another RED robot with my parent; the one with a child, or else the smaller id, stays
+    if (!claimed && b.emitter >= 0 && b.color == Led::kRed && b.tag == m.parent.id &&
+        (claims.has(b.emitter) || b.emitter < in.id)) {
+      sight.bypassed = true;
+    }
+  }
+}
+
+}  // namespace
+
 void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfSight& sight) {
   sight = PfSight{};
   Claims claims;
@@ -653,6 +698,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   track(m.target, in, p, false);
   track(m.parent, in, p, false);
   track(m.child, in, p, true);
+  if (m.bypass && m.state == PfState::kSubgoal) perceive_bypass(in, p, m, claims, sight);
   if (m.target.visible && dist(in.pose.p, m.target.last_seen) / kCm <= p.d_detect) m.target_reached = true;
   // forming robots that lose their target at least d_sub/2 from it, nearer the nest, go back to
   // the last place they saw it and stop there (row 7a): the chain bends round the obstacle

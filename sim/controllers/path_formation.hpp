@@ -58,6 +58,7 @@ struct PfMemory {
   bool single_child = false;    ///< TA, allocated with single_child: claims and respects claims [R]
   bool backoff_spot = false;    ///< TA, allocated with ta_backoff_spot: forms at the spot toward the nest [R]
   bool seek_tip = false;        ///< TA, allocated with seek_tip: waits by a forming robot [R]
+  bool bypass = false;          ///< TA, allocated with chain_bypass: skips a redundant parent [R]
   double nest_crowd_cm = 0;     ///< TA, allocated: no edge following this close to the nest [R]
   std::int64_t t_state = 0;     ///< ticks in the current state
   double t_explore = 1000;      ///< T_explore, the exploration budget [ticks]
@@ -98,12 +99,14 @@ struct PfSight {
   const Blob* my_subnest = nullptr;    ///< the nearest BLUE robot advertising me as its parent
   const Blob* guide = nullptr;         ///< follower: the CYAN robot in view fewest hops from the founder
   const Blob* forming_link = nullptr;  ///< seek_tip: the WHITE (forming) robot in view nearest the nest
-  bool recovery_near = false;          ///< an ORANGE robot within r_rec
-  bool forming_in_view = false;        ///< a WHITE (subgoal-forming) robot within R_vis
-  bool goal_claimed = false;    ///< single_child: a robot in view forms from the goal or has it as parent
-  bool may_form = true;         ///< this tick's draw of p_form (one at a time)
-  Vec2 repulsion;               ///< R (SPEC §2.1), robot frame
-  double nest_distance_cm = 0;  ///< from the positioning sensor
+  const Blob* grandparent = nullptr;   ///< bypass: the parent's parent (RED or the goal) within d_sub + 10 cm
+  bool bypassed = false;         ///< bypass: unclaimed, and another RED robot has my parent as its parent
+  bool recovery_near = false;    ///< an ORANGE robot within r_rec
+  bool forming_in_view = false;  ///< a WHITE (subgoal-forming) robot within R_vis
+  bool goal_claimed = false;     ///< single_child: a robot in view forms from the goal or has it as parent
+  bool may_form = true;          ///< this tick's draw of p_form (one at a time)
+  Vec2 repulsion;                ///< R (SPEC §2.1), robot frame
+  double nest_distance_cm = 0;   ///< from the positioning sensor
 };
 
 /// Everything a guard or an action may read.

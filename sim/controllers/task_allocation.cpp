@@ -127,6 +127,7 @@ void start_path_formation(const TaContext& c, RobotMemory& mem, double t_founder
   mem.pf.single_child = c.p.single_child;
   mem.pf.backoff_spot = c.p.ta_backoff_spot;
   mem.pf.seek_tip = c.p.single_child && c.p.seek_tip;
+  mem.pf.bypass = c.p.single_child && c.p.chain_bypass;
   mem.pf.nest_crowd_cm = c.p.nest_crowd;
   mem.trail.reset(c.in.pose.p);
 }
