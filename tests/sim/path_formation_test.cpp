@@ -117,13 +117,19 @@ TEST(PfTable, Row1SingleChildSkipsAClaimedGoalOrSubgoal) {
   EXPECT_EQ(plain.target.id, kGoalEmitter);
 }
 
+// R: chain_bypass. A RED subgoal with the option on and `parent` 70 cm ahead
+PfMemory bypassing_subgoal(int parent, bool bypass = true) {
+  PfMemory m = in_state(PfState::kSubgoal);
+  m.single_child = true;
+  m.bypass = bypass;
+  m.parent = tracked(parent, {0.7, 0.0});
+  return m;
+}
+
 // R: chain_bypass. Subgoal 3 (me) has parent 7, whose light names 5 as its parent; 5 stands 60 cm
 // from me (<= d_sub + 10 cm): 7 is redundant, and I take 5 as my parent (row 15)
 TEST(PfTable, Row15ASubgoalSkipsAParentWhoseParentIsWithinReach) {
-  PfMemory m = in_state(PfState::kSubgoal);
-  m.single_child = true;
-  m.bypass = true;
-  m.parent = tracked(7, {0.7, 0.0});
+  PfMemory m = bypassing_subgoal(7);
   Reading r;
   r.add(Led::kRed, 7, 0, 70, 5);
   r.add(Led::kRed, 5, 60, 60, 2);
@@ -131,17 +137,12 @@ TEST(PfTable, Row15ASubgoalSkipsAParentWhoseParentIsWithinReach) {
   EXPECT_EQ(m.state, PfState::kSubgoal);
   EXPECT_EQ(m.parent.id, 5);
   // beyond d_sub + 10 cm, or without the option, the chain stays as it is
-  PfMemory far = in_state(PfState::kSubgoal);
-  far.single_child = true;
-  far.bypass = true;
-  far.parent = tracked(7, {0.7, 0.0});
+  PfMemory far = bypassing_subgoal(7);
   Reading out;
   out.add(Led::kRed, 7, 0, 70, 5);
   out.add(Led::kRed, 5, 60, 85, 2);
   EXPECT_EQ(fire(far, out), "");
-  PfMemory off = in_state(PfState::kSubgoal);
-  off.single_child = true;
-  off.parent = tracked(7, {0.7, 0.0});
+  PfMemory off = bypassing_subgoal(7, false);
   EXPECT_EQ(fire(off, r), "");
 }
 
@@ -149,10 +150,7 @@ TEST(PfTable, Row15ASubgoalSkipsAParentWhoseParentIsWithinReach) {
 // robot 9, now names 5 as its parent: I was skipped, and go back to the nest (row 16). A robot
 // that still has a child stays.
 TEST(PfTable, Row16ASkippedSubgoalLeavesTheChain) {
-  PfMemory m = in_state(PfState::kSubgoal);
-  m.single_child = true;
-  m.bypass = true;
-  m.parent = tracked(5, {0.7, 0.0});
+  PfMemory m = bypassing_subgoal(5);
   Reading r;
   r.add(Led::kRed, 5, 0, 70, 2);
   r.add(Led::kRed, 8, 90, 70, 5);
@@ -160,10 +158,7 @@ TEST(PfTable, Row16ASkippedSubgoalLeavesTheChain) {
   EXPECT_EQ(fire(m, r), "#16");
   EXPECT_EQ(m.state, PfState::kReturnToNest);
   EXPECT_FALSE(m.parent.valid());
-  PfMemory kept = in_state(PfState::kSubgoal);
-  kept.single_child = true;
-  kept.bypass = true;
-  kept.parent = tracked(5, {0.7, 0.0});
+  PfMemory kept = bypassing_subgoal(5);
   Reading child = r;
   child.add(Led::kRed, 11, 180, 70, kMe);  // robot 11 names me as its parent
   EXPECT_EQ(fire(kept, child), "");
