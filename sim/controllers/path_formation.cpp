@@ -612,8 +612,9 @@ void perceive_bypass(const Percept& in, const Params& p, const PfMemory& m, cons
   }
   const bool claimed = claims.has(in.id);
   for (const Blob& b : in.blobs) {
+    // (not where the grandparent names my parent or me as its own: a loop, not a chain)
     if (grandparent != kNobody && b.emitter == grandparent && b.distance_cm <= p.d_sub + 10.0 &&
-        (b.color == Led::kRed || b.emitter == kGoalEmitter)) {
+        (b.color == Led::kRed || b.emitter == kGoalEmitter) && b.tag != m.parent.id && b.tag != in.id) {
       sight.grandparent = &b;
     }
     // a sibling: another RED robot with my parent; the one with a child, or else the smaller id, stays

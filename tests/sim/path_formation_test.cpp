@@ -144,6 +144,12 @@ TEST(PfTable, Row15ASubgoalSkipsAParentWhoseParentIsWithinReach) {
   EXPECT_EQ(fire(far, out), "");
   PfMemory off = bypassing_subgoal(7, false);
   EXPECT_EQ(fire(off, r), "");
+  // 5 names 7 as its parent: 7 and 5 form a loop, and following it would flip for ever
+  PfMemory loop = bypassing_subgoal(7);
+  Reading cycle;
+  cycle.add(Led::kRed, 7, 0, 70, 5);
+  cycle.add(Led::kRed, 5, 60, 60, 7);
+  EXPECT_EQ(fire(loop, cycle), "");
 }
 
 // R: chain_bypass. I (3) am RED with parent 5; nobody claims me, and robot 8, RED and claimed by
