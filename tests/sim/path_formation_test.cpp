@@ -149,6 +149,7 @@ TEST(PfTable, Row15ASubgoalSkipsAParentWhoseParentIsWithinReach) {
   Reading cycle;
   cycle.add(Led::kRed, 7, 0, 70, 5);
   cycle.add(Led::kRed, 5, 60, 60, 7);
+  cycle.add(Led::kRed, 11, 180, 70, kMe);  // my child: I am not left out (row 16)
   EXPECT_EQ(fire(loop, cycle), "");
 }
 
