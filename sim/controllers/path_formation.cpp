@@ -601,26 +601,44 @@ std::uint8_t pf_row_number(std::string_view row) {
 namespace {
 
 // chain_bypass [R]: a RED subgoal whose parent's parent (the RED robot the parent's light names, or
-// the goal) is in view within d_sub + 10 cm skips the parent; a RED subgoal that nobody claims while
-// another RED robot names its parent as parent (its former child, which skipped it) leaves the chain
-void perceive_bypass(const Percept& in, const Params& p, const PfMemory& m, const Claims& claims,
-                     PfSight& sight) {
+// the goal) is in view within d_sub + 10 cm skips the parent. A RED subgoal leaves the chain once
+// every robot that has named it as parent (its children, by their lights' tags or claims on the
+// medium) is seen or heard naming another, one of them its own parent: it was skipped
+void perceive_bypass(const Percept& in, const Params& p, PfMemory& m, const Claims& claims, PfSight& sight) {
+  // who names whom this tick: vision + ID tags, and claims on the medium
+  std::array<int, kMaxClaimants> names;
+  names.fill(kNobody);
+  const auto note = [&](int robot, int named) {
+    if (named == in.id) m.add_claimant(robot);
+    for (std::size_t i = 0; i < m.claimants.size(); ++i) {
+      if (m.claimants[i] == robot) names[i] = named;
+    }
+  };
+  for (const Blob& b : in.blobs) {
+    if (b.emitter >= 0 && b.tag != kNobody && b.color != Led::kCyan) note(b.emitter, b.tag);
+  }
+  for (const RabMessage& r : in.rab) {
+    const int named = claimed_emitter(decode(r.data));
+    if (named != kNobody) note(r.sender, named);
+  }
+  bool all_renamed = m.claimant_count > 0 && m.claimant_count <= kMaxClaimants && !claims.has(in.id);
+  bool to_parent = false;
+  for (int i = 0; i < std::min(m.claimant_count, kMaxClaimants); ++i) {
+    all_renamed = all_renamed && names[i] != kNobody && names[i] != in.id;
+    to_parent = to_parent || (m.parent.valid() && names[i] == m.parent.id);
+  }
+  sight.bypassed = all_renamed && to_parent;
+
   if (!m.parent.valid() || !m.parent.visible) return;
   int grandparent = kNobody;
   for (const Blob& b : in.blobs) {
     if (b.emitter == m.parent.id && b.color == Led::kRed) grandparent = b.tag;
   }
-  const bool claimed = claims.has(in.id);
   for (const Blob& b : in.blobs) {
     // (not where the grandparent names my parent or me as its own: a loop, not a chain)
     if (grandparent != kNobody && b.emitter == grandparent && b.distance_cm <= p.d_sub + 10.0 &&
         (b.color == Led::kRed || b.emitter == kGoalEmitter) && b.tag != m.parent.id && b.tag != in.id) {
       sight.grandparent = &b;
-    }
-    // a sibling: another RED robot with my parent; the one with a child, or else the smaller id, stays
-    if (!claimed && b.emitter >= 0 && b.color == Led::kRed && b.tag == m.parent.id &&
-        (claims.has(b.emitter) || b.emitter < in.id)) {
-      sight.bypassed = true;
     }
   }
 }
@@ -782,6 +800,8 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
     m.view_limited = false;
     m.safe_pos = in.pose.p;
     m.seek_ref = false;
+    m.claimants.fill(kNobody);
+    m.claimant_count = 0;
     m.guide = false;
     m.follow_guide = false;
     if (fired->to == PfState::kReturnToNest && !m.sighted_this_trip) m.has_sighting = false;  // a stale lead

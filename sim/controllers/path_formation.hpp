@@ -5,6 +5,7 @@
 // chain nest -> goal and optimisation 2 goal -> nest.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <span>
@@ -48,21 +49,35 @@ struct Tracked {
   bool valid() const { return id != kNobody; }
 };
 
+inline constexpr int kMaxClaimants = 4;
+
 /// The path-formation memory of one robot.
 /// Longest chain of followers behind a guiding founder; beyond it a light is no guide.
 inline constexpr int kMaxGuideHops = 30;
 
 struct PfMemory {
   PfState state = PfState::kExploring;
-  bool scout = false;           ///< task allocation's scout: explores, but row 1 is the TA's (founder)
-  bool single_child = false;    ///< TA, allocated with single_child: claims and respects claims [R]
-  bool backoff_spot = false;    ///< TA, allocated with ta_backoff_spot: forms at the spot toward the nest [R]
-  bool seek_tip = false;        ///< TA, allocated with seek_tip: waits by a forming robot [R]
-  bool bypass = false;          ///< TA, allocated with chain_bypass: skips a redundant parent [R]
-  double nest_crowd_cm = 0;     ///< TA, allocated: no edge following this close to the nest [R]
-  std::int64_t t_state = 0;     ///< ticks in the current state
-  double t_explore = 1000;      ///< T_explore, the exploration budget [ticks]
-  std::int64_t nest_ticks = 0;  ///< consecutive ticks within R_nest_reach while returning (row 3)
+  bool scout = false;         ///< task allocation's scout: explores, but row 1 is the TA's (founder)
+  bool single_child = false;  ///< TA, allocated with single_child: claims and respects claims [R]
+  bool backoff_spot = false;  ///< TA, allocated with ta_backoff_spot: forms at the spot toward the nest [R]
+  bool seek_tip = false;      ///< TA, allocated with seek_tip: waits by a forming robot [R]
+  bool bypass = false;        ///< TA, allocated with chain_bypass: skips a redundant parent [R]
+  std::array<int, kMaxClaimants> claimants{kNobody, kNobody, kNobody,
+                                           kNobody};  ///< bypass: who named me as parent
+  int claimant_count = 0;  ///< bypass: how many did (more than the array holds: never leaves)
+
+  void add_claimant(int robot) {
+    for (int i = 0; i < std::min(claimant_count, kMaxClaimants); ++i) {
+      if (claimants[i] == robot) return;
+    }
+    if (claimant_count < kMaxClaimants) claimants[claimant_count] = robot;
+    ++claimant_count;
+  }
+
+  double nest_crowd_cm = 0;      ///< TA, allocated: no edge following this close to the nest [R]
+  std::int64_t t_state = 0;      ///< ticks in the current state
+  double t_explore = 1000;       ///< T_explore, the exploration budget [ticks]
+  std::int64_t nest_ticks = 0;   ///< consecutive ticks within R_nest_reach while returning (row 3)
   bool explore_blocked = false;  ///< edge following found no way farther from the nest (row 2)
   Tracked target;                ///< what the robot backs off from while forming
   bool target_reached = true;    ///< forming: has been within d_detect of the target (row 5 needs it)
