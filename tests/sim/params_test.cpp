@@ -111,5 +111,22 @@ TEST(Params, TenCmPerSecondGenomeDiffersFromThePaperGenomeOnlyInSpeedAndBackOff)
   }
 }
 
+// the allocation study (docs/CHOICES.md, "Allocating by the founder's trip"): genomes/paper-frugal.toml
+// is the paper genome with t from the founder's trip and delta calibrated for it
+TEST(Params, FrugalGenomeDiffersFromThePaperGenomeOnlyInTheAllocation) {
+  const Params paper = load_params(test::source_path("genomes/paper.toml"));
+  const Params frugal = load_params(test::source_path("genomes/paper-frugal.toml"));
+  EXPECT_EQ(paper.t_source, TSource::kBudget);
+  EXPECT_EQ(frugal.t_source, TSource::kElapsed);
+  EXPECT_LT(frugal.delta_open, paper.delta_open);
+  EXPECT_LT(frugal.delta_obstacle, paper.delta_obstacle);
+  EXPECT_LT(frugal.delta_complex, paper.delta_complex);
+  for (const ParamInfo& info : param_table()) {
+    const std::string name(info.name);
+    if (name == "t_source" || name.rfind("delta_", 0) == 0) continue;
+    EXPECT_EQ(get_value(frugal, info), get_value(paper, info)) << info.name;
+  }
+}
+
 }  // namespace
 }  // namespace swarmpath::sim
