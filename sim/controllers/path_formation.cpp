@@ -101,13 +101,23 @@ struct Claims {
   }
 };
 
-Claims gather_claims(const Percept& in) {
-  Claims c;
+// every (robot, what it names as its target or parent) this tick: a chain robot's or forming
+// robot's light tag (not a recovery robot's), and claims on the medium
+template <typename F>
+void for_each_naming(const Percept& in, F&& f) {
   for (const Blob& b : in.blobs) {
     if (b.emitter < 0 || b.tag == kNobody) continue;
-    if (b.color == Led::kRed || (is_path_colour(b.color) && b.color != Led::kOrange)) c.add(b.tag);
+    if (b.color == Led::kRed || (is_path_colour(b.color) && b.color != Led::kOrange)) f(b.emitter, b.tag);
   }
-  for (const RabMessage& r : in.rab) c.add(claimed_emitter(decode(r.data)));
+  for (const RabMessage& r : in.rab) {
+    const int named = claimed_emitter(decode(r.data));
+    if (named != kNobody) f(r.sender, named);
+  }
+}
+
+Claims gather_claims(const Percept& in) {
+  Claims c;
+  for_each_naming(in, [&](int, int named) { c.add(named); });
   return c;
 }
 
@@ -605,25 +615,19 @@ namespace {
 // every robot that has named it as parent (its children, by their lights' tags or claims on the
 // medium) is seen or heard naming another, one of them its own parent: it was skipped
 void perceive_bypass(const Percept& in, const Params& p, PfMemory& m, const Claims& claims, PfSight& sight) {
-  // who names whom this tick: vision + ID tags, and claims on the medium
-  std::array<int, kMaxClaimants> names;
+  // what each robot that ever named me names this tick
+  std::array<int, Claimants::kMax> names;
   names.fill(kNobody);
-  const auto note = [&](int robot, int named) {
-    if (named == in.id) m.add_claimant(robot);
-    for (std::size_t i = 0; i < m.claimants.size(); ++i) {
-      if (m.claimants[i] == robot) names[i] = named;
+  for_each_naming(in, [&](int robot, int named) {
+    if (named == in.id) m.claimants.add(robot);
+    for (std::size_t i = 0; i < m.claimants.ids.size(); ++i) {
+      if (m.claimants.ids[i] == robot) names[i] = named;
     }
-  };
-  for (const Blob& b : in.blobs) {
-    if (b.emitter >= 0 && b.tag != kNobody && b.color != Led::kCyan) note(b.emitter, b.tag);
-  }
-  for (const RabMessage& r : in.rab) {
-    const int named = claimed_emitter(decode(r.data));
-    if (named != kNobody) note(r.sender, named);
-  }
-  bool all_renamed = m.claimant_count > 0 && m.claimant_count <= kMaxClaimants && !claims.has(in.id);
+  });
+  const Claimants& who = m.claimants;
+  bool all_renamed = who.count > 0 && who.count <= Claimants::kMax && !claims.has(in.id);
   bool to_parent = false;
-  for (int i = 0; i < std::min(m.claimant_count, kMaxClaimants); ++i) {
+  for (int i = 0; i < std::min(who.count, Claimants::kMax); ++i) {
     all_renamed = all_renamed && names[i] != kNobody && names[i] != in.id;
     to_parent = to_parent || (m.parent.valid() && names[i] == m.parent.id);
   }
@@ -800,8 +804,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
     m.view_limited = false;
     m.safe_pos = in.pose.p;
     m.seek_ref = false;
-    m.claimants.fill(kNobody);
-    m.claimant_count = 0;
+    m.claimants = Claimants{};
     m.guide = false;
     m.follow_guide = false;
     if (fired->to == PfState::kReturnToNest && !m.sighted_this_trip) m.has_sighting = false;  // a stale lead

@@ -49,7 +49,20 @@ struct Tracked {
   bool valid() const { return id != kNobody; }
 };
 
-inline constexpr int kMaxClaimants = 4;
+/// chain_bypass [R]: the robots that have named a subgoal as their parent or target.
+struct Claimants {
+  static constexpr int kMax = 4;
+  std::array<int, kMax> ids{kNobody, kNobody, kNobody, kNobody};
+  int count = 0;  ///< how many (more than kMax: the subgoal never counts itself skipped)
+
+  void add(int robot) {
+    for (int i = 0; i < std::min(count, kMax); ++i) {
+      if (ids[i] == robot) return;
+    }
+    if (count < kMax) ids[count] = robot;
+    ++count;
+  }
+};
 
 /// The path-formation memory of one robot.
 /// Longest chain of followers behind a guiding founder; beyond it a light is no guide.
@@ -57,27 +70,15 @@ inline constexpr int kMaxGuideHops = 30;
 
 struct PfMemory {
   PfState state = PfState::kExploring;
-  bool scout = false;         ///< task allocation's scout: explores, but row 1 is the TA's (founder)
-  bool single_child = false;  ///< TA, allocated with single_child: claims and respects claims [R]
-  bool backoff_spot = false;  ///< TA, allocated with ta_backoff_spot: forms at the spot toward the nest [R]
-  bool seek_tip = false;      ///< TA, allocated with seek_tip: waits by a forming robot [R]
-  bool bypass = false;        ///< TA, allocated with chain_bypass: skips a redundant parent [R]
-  std::array<int, kMaxClaimants> claimants{kNobody, kNobody, kNobody,
-                                           kNobody};  ///< bypass: who named me as parent
-  int claimant_count = 0;  ///< bypass: how many did (more than the array holds: never leaves)
-
-  void add_claimant(int robot) {
-    for (int i = 0; i < std::min(claimant_count, kMaxClaimants); ++i) {
-      if (claimants[i] == robot) return;
-    }
-    if (claimant_count < kMaxClaimants) claimants[claimant_count] = robot;
-    ++claimant_count;
-  }
-
-  double nest_crowd_cm = 0;      ///< TA, allocated: no edge following this close to the nest [R]
-  std::int64_t t_state = 0;      ///< ticks in the current state
-  double t_explore = 1000;       ///< T_explore, the exploration budget [ticks]
-  std::int64_t nest_ticks = 0;   ///< consecutive ticks within R_nest_reach while returning (row 3)
+  bool scout = false;           ///< task allocation's scout: explores, but row 1 is the TA's (founder)
+  bool single_child = false;    ///< TA, allocated with single_child: claims and respects claims [R]
+  bool backoff_spot = false;    ///< TA, allocated with ta_backoff_spot: forms at the spot toward the nest [R]
+  bool seek_tip = false;        ///< TA, allocated with seek_tip: waits by a forming robot [R]
+  bool bypass = false;          ///< TA, allocated with chain_bypass: skips a redundant parent [R]
+  double nest_crowd_cm = 0;     ///< TA, allocated: no edge following this close to the nest [R]
+  std::int64_t t_state = 0;     ///< ticks in the current state
+  double t_explore = 1000;      ///< T_explore, the exploration budget [ticks]
+  std::int64_t nest_ticks = 0;  ///< consecutive ticks within R_nest_reach while returning (row 3)
   bool explore_blocked = false;  ///< edge following found no way farther from the nest (row 2)
   Tracked target;                ///< what the robot backs off from while forming
   bool target_reached = true;    ///< forming: has been within d_detect of the target (row 5 needs it)
@@ -95,6 +96,7 @@ struct PfMemory {
   bool to_sighting = false;        ///< exploring: first travelling back to the sighting (site fidelity)
   std::int64_t travel_ticks = 0;   ///< exploring: ticks spent travelling to the sighting (not budget)
   std::int64_t trip_start = 0;     ///< the tick this exploration trip began (TA t_source = elapsed)
+  Claimants claimants;             ///< bypass: who has named this subgoal as parent
   bool guide = false;              ///< TA founder leading the allocated robots to the goal (LED CYAN) [R]
   bool follow_guide = false;       ///< allocated robot following the CYAN guides on its first trip [R]
   std::int64_t guide_unseen = 0;   ///< consecutive ticks a follower has seen no guide
@@ -115,13 +117,13 @@ struct PfSight {
   const Blob* guide = nullptr;         ///< follower: the CYAN robot in view fewest hops from the founder
   const Blob* forming_link = nullptr;  ///< seek_tip: the WHITE (forming) robot in view nearest the nest
   const Blob* grandparent = nullptr;   ///< bypass: the parent's parent (RED or the goal) within d_sub + 10 cm
-  bool bypassed = false;         ///< bypass: unclaimed, and another RED robot has my parent as its parent
-  bool recovery_near = false;    ///< an ORANGE robot within r_rec
-  bool forming_in_view = false;  ///< a WHITE (subgoal-forming) robot within R_vis
-  bool goal_claimed = false;     ///< single_child: a robot in view forms from the goal or has it as parent
-  bool may_form = true;          ///< this tick's draw of p_form (one at a time)
-  Vec2 repulsion;                ///< R (SPEC §2.1), robot frame
-  double nest_distance_cm = 0;   ///< from the positioning sensor
+  bool bypassed = false;               ///< bypass: every robot that named me now names another, one my parent
+  bool recovery_near = false;          ///< an ORANGE robot within r_rec
+  bool forming_in_view = false;        ///< a WHITE (subgoal-forming) robot within R_vis
+  bool goal_claimed = false;    ///< single_child: a robot in view forms from the goal or has it as parent
+  bool may_form = true;         ///< this tick's draw of p_form (one at a time)
+  Vec2 repulsion;               ///< R (SPEC §2.1), robot frame
+  double nest_distance_cm = 0;  ///< from the positioning sensor
 };
 
 /// Everything a guard or an action may read.

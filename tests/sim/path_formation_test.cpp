@@ -158,13 +158,13 @@ TEST(PfTable, Row15ASubgoalSkipsAParentWhoseParentIsWithinReach) {
 // that has not seen what became of every robot that named it, stays.
 TEST(PfTable, Row16ASkippedSubgoalLeavesTheChain) {
   PfMemory m = bypassing_subgoal(5);
-  m.add_claimant(8);
+  m.claimants.add(8);
   Reading r;
   r.add(Led::kRed, 5, 0, 70, 2);
   r.add(Led::kRed, 8, 90, 70, 5);
   r.add(Led::kRed, 9, 90, 95, 8);
   PfMemory two = m;
-  two.add_claimant(12);  // a second child, out of sight this tick
+  two.claimants.add(12);  // a second child, out of sight this tick
   EXPECT_EQ(fire(two, r), "");
   PfMemory stranger = bypassing_subgoal(5);  // 8 was never my child: a sibling, not a bypass
   EXPECT_EQ(fire(stranger, r), "");
@@ -172,7 +172,7 @@ TEST(PfTable, Row16ASkippedSubgoalLeavesTheChain) {
   EXPECT_EQ(m.state, PfState::kReturnToNest);
   EXPECT_FALSE(m.parent.valid());
   PfMemory kept = bypassing_subgoal(5);
-  kept.add_claimant(8);
+  kept.claimants.add(8);
   Reading child = r;
   child.add(Led::kRed, 11, 180, 70, kMe);  // robot 11 names me as its parent
   EXPECT_EQ(fire(kept, child), "");
