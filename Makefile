@@ -39,7 +39,8 @@ asan:
 	ctest --preset asan -j $(JOBS)
 
 bench: build
-	./build/release/bench/sim_bench --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+	./build/release/bench/sim_bench --benchmark_repetitions=9 --benchmark_enable_random_interleaving=true \
+		--benchmark_report_aggregates_only=true
 
 format:
 	clang-format -i $(SOURCES)

@@ -271,6 +271,16 @@ Scenario parse(const TomlDoc& doc) {
     s.sim.stop_when_complete = sim->boolean_or("stop_when_complete", true);
     s.sim.grid_cell = sim->number_or("grid_cell", 1.0);
     require_range(*sim, "grid_cell", s.sim.grid_cell, 0.1, 10.0);
+    const Vec2 regions = sim->vec2_or("physics_regions", {1.0, 1.0});
+    for (const double r : {regions.x, regions.y}) {
+      if (r != std::floor(r) || r < 1.0 || r > kMaxPhysicsRegions) {
+        sim->fail("physics_regions", "must be two whole numbers in [1, " +
+                                         std::to_string(kMaxPhysicsRegions) + "] (got [" + fmt(regions.x) +
+                                         ", " + fmt(regions.y) + "])");
+      }
+    }
+    s.sim.physics_regions_x = static_cast<int>(regions.x);
+    s.sim.physics_regions_y = static_cast<int>(regions.y);
     sim->finish();
   }
 

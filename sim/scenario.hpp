@@ -46,6 +46,8 @@ struct SimSettings {
   bool occlude_by_robots = false;  ///< robot bodies block the camera (SPEC §1.3)
   bool stop_when_complete = true;  ///< end a path-formation run once the path is complete
   double grid_cell = 1.0;          ///< neighbour-grid cell size [m]
+  int physics_regions_x = 1;       ///< Box2D worlds across x (see PhysicsLayout)
+  int physics_regions_y = 1;       ///< and along y
 
   double dt() const { return 1.0 / ticks_per_second; }
 };
@@ -77,6 +79,7 @@ inline constexpr int kMaxRobots = 100000;
 inline constexpr std::int64_t kMaxTicks = 10000000;
 inline constexpr double kMaxArenaSide = 2000.0;  // [m]
 inline constexpr std::size_t kMaxObstacles = 200000;
+inline constexpr int kMaxPhysicsRegions = 16;  // per axis (each Box2D world holds a 100 KiB stack)
 
 /// Loads and validates a scenario file. Throws ConfigError ("file:line: key: message").
 Scenario load_scenario(const std::string& path);

@@ -25,22 +25,32 @@ SensorView sensor_view(const Scenario& s, const Params& p, const World& w) {
   return view;
 }
 
+namespace {
+
+// Robot i's readings: the Percept's fixed part, its blobs and RAB messages appended to the buffers
+// (its spans are set by the caller, once the buffers have stopped growing).
+void sense_robot(const SensorView& view, const World& w, std::size_t i, Percept& in, std::vector<Blob>& blobs,
+                 std::vector<RabMessage>& inbox) {
+  const int id = static_cast<int>(i);
+  in.tick = w.tick;
+  in.id = id;
+  in.pose = w.poses[i];
+  if (w.needs.proximity) sense_proximity(view, id, in.proximity);
+  if (w.needs.camera) sense_camera(view, id, blobs);
+  if (w.needs.rab && robot_listens(w.mode, w.memory[i])) sense_rab(view, id, inbox);
+}
+
+}  // namespace
+
 void sense_all(const Scenario& s, const Params& p, World& w) {
   const SensorView view = sensor_view(s, p, w);
   const std::size_t n = w.poses.size();
   w.blobs.clear();
   w.rab_inbox.clear();
   for (std::size_t i = 0; i < n; ++i) {
-    const int id = static_cast<int>(i);
-    Percept& in = w.percepts[i];
-    in.tick = w.tick;
-    in.id = id;
-    in.pose = w.poses[i];
-    if (w.needs.proximity) sense_proximity(view, id, in.proximity);
     w.blob_begin[i] = w.blobs.size();
-    if (w.needs.camera) sense_camera(view, id, w.blobs);
     w.rab_begin[i] = w.rab_inbox.size();
-    if (w.needs.rab && robot_listens(w.mode, w.memory[i])) sense_rab(view, id, w.rab_inbox);
+    sense_robot(view, w, i, w.percepts[i], w.blobs, w.rab_inbox);
   }
   w.blob_begin[n] = w.blobs.size();
   w.rab_begin[n] = w.rab_inbox.size();
@@ -54,6 +64,19 @@ void sense_all(const Scenario& s, const Params& p, World& w) {
 void control_all(const Params& p, World& w) {
   for (std::size_t i = 0; i < w.poses.size(); ++i)
     w.commands[i] = control(w.mode, w.percepts[i], p, w.memory[i]);
+}
+
+void sense_and_control_all(const Scenario& s, const Params& p, World& w) {
+  const SensorView view = sensor_view(s, p, w);
+  Percept in;
+  for (std::size_t i = 0; i < w.poses.size(); ++i) {
+    w.blobs.clear();
+    w.rab_inbox.clear();
+    sense_robot(view, w, i, in, w.blobs, w.rab_inbox);
+    in.blobs = w.blobs;
+    in.rab = w.rab_inbox;
+    w.commands[i] = control(w.mode, in, p, w.memory[i]);
+  }
 }
 
 void act_all(World& w) {
@@ -79,10 +102,8 @@ void integrate(const Scenario& s, World& w, MetricsAccumulator& m) {
 }
 
 void step(const Scenario& s, const Params& p, World& w, MetricsAccumulator& m) {
-  // sense: every robot reads the same pre-step snapshot
-  sense_all(s, p, w);
-  // control: each robot's controller, in id order
-  control_all(p, w);
+  // sense and control, robot by robot in id order: every robot reads the same pre-step snapshot
+  sense_and_control_all(s, p, w);
   // act: wheels, LEDs and the RAB outbox (heard by the others next tick)
   act_all(w);
   // physics, then the post-step snapshot the next tick senses

@@ -15,6 +15,9 @@ namespace swarmpath::sim {
 
 /// One tick, in a fixed phase order: sense all robots (same pre-step snapshot), control all in
 /// id order, act (wheels, LEDs, RAB outbox), one physics step, then refresh poses and grid.
+/// Sensing reads nothing that control writes (a robot's own memory only before its own control),
+/// so step() senses and controls robot by robot, a Percept that never leaves the cache; the
+/// result is that of sense_all then control_all (test Step.RobotByRobotEqualsThePhases).
 void step(const Scenario& s, const Params& p, World& w, MetricsAccumulator& m);
 
 // The phases of step(), exposed for tests that check what each one sees.
@@ -25,6 +28,8 @@ SensorView sensor_view(const Scenario& s, const Params& p, const World& w);
 void sense_all(const Scenario& s, const Params& p, World& w);
 /// Phase 2: every robot's Command, in id order.
 void control_all(const Params& p, World& w);
+/// Phases 1 and 2 robot by robot, as step() runs them (w.percepts is left as it was).
+void sense_and_control_all(const Scenario& s, const Params& p, World& w);
 /// Phase 3: wheels, LEDs and RAB outbox from the commands.
 void act_all(World& w);
 /// Phase 4: one physics step, then the new poses and neighbour grid.

@@ -118,7 +118,11 @@ World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t se
   w.mode = mode;
   w.seed = seed;
   w.shapes = obstacle_shapes(s);
-  w.physics = std::make_unique<Physics>(w.shapes);
+  PhysicsLayout layout;
+  layout.bounds = s.arena_bounds();
+  layout.nx = s.sim.physics_regions_x;
+  layout.ny = s.sim.physics_regions_y;
+  w.physics = std::make_unique<Physics>(w.shapes, layout);
   w.needs = sensor_needs(mode);
   const Aabb bounds = grid_bounds(s);
   const double cell = s.sim.grid_cell;

@@ -150,6 +150,21 @@ TEST(ScenarioRejects, BadClassAndSpacing) {
                   "so that robots do not overlap");
 }
 
+TEST(Scenario, PhysicsRegionsAreReadAndDefaultToOneWorld) {
+  EXPECT_EQ(test::small_arena().sim.physics_regions_x, 1);
+  EXPECT_EQ(test::small_arena().sim.physics_regions_y, 1);
+  const Scenario s = test::small_arena("[simulation]\nphysics_regions = [3, 2]\n");
+  EXPECT_EQ(s.sim.physics_regions_x, 3);
+  EXPECT_EQ(s.sim.physics_regions_y, 2);
+}
+
+TEST(ScenarioRejects, PhysicsRegionsOutsideOneToSixteenOrFractional) {
+  for (const std::string bad : {"[0, 1]", "[2, 17]", "[1.5, 1]"}) {
+    expect_rejected(test::small_arena_toml("[simulation]\nphysics_regions = " + bad + "\n"), 13,
+                    "simulation.physics_regions", "two whole numbers in [1, 16]");
+  }
+}
+
 TEST(ScenarioRejects, MissingFile) {
   try {
     load_scenario("/nonexistent/env.toml");
