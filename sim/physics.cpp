@@ -7,6 +7,7 @@
 #include <box2d/box2d.h>
 
 #include "robot_model.hpp"
+#include "spatial.hpp"
 
 // Box2D 2.4 times every island of every step with b2Timer, which reads the wall clock
 // (gettimeofday) four times per island: a third of a 100-robot tick, spent on profile numbers
@@ -116,6 +117,7 @@ struct Wheels {
 
 struct Physics::Impl {
   PhysicsLayout layout;
+  CellFrame regions;
   std::vector<std::unique_ptr<b2World>> worlds;  // one per region, row-major
   std::vector<std::vector<b2Body*>> members;     // each region's robot bodies
   std::vector<b2Body*> robots;
@@ -128,22 +130,7 @@ struct Physics::Impl {
   b2MassData braked_mass = robot_mass(kBrakeMassFactor);
   unsigned warm_sink = 0;
 
-  Aabb region_bounds(int r) const {
-    const Vec2 size = layout.bounds.hi - layout.bounds.lo;
-    const Vec2 cell{size.x / layout.nx, size.y / layout.ny};
-    const Vec2 lo = layout.bounds.lo + Vec2{cell.x * (r % layout.nx), cell.y * (r / layout.nx)};
-    return {lo, lo + cell};
-  }
-
-  int region_at(const b2Vec2& p) const {
-    const auto cell = [](double v, double lo, double hi, int n) {
-      const double f = (v - lo) / (hi - lo) * n;
-      if (!(f > 0.0)) return 0;  // also NaN
-      return f >= n - 1 ? n - 1 : static_cast<int>(f);
-    };
-    return cell(p.y, layout.bounds.lo.y, layout.bounds.hi.y, layout.ny) * layout.nx +
-           cell(p.x, layout.bounds.lo.x, layout.bounds.hi.x, layout.nx);
-  }
+  int region_at(const b2Vec2& p) const { return regions.index({p.x, p.y}); }
 
   b2Body* create_robot(int r, const b2Vec2& p, float angle, std::size_t id) {
     b2BodyDef def;
@@ -201,14 +188,15 @@ Physics::Physics(std::span<const Shape> obstacles, const PhysicsLayout& layout)
     : impl_(std::make_unique<Impl>()) {
   impl_->layout = layout;
   const int count = layout.nx * layout.ny;
+  if (count > 1) impl_->regions = CellFrame(layout.bounds, layout.nx, layout.ny);  // else one cell
   for (int r = 0; r < count; ++r) {
     impl_->worlds.push_back(make_b2_world());
     impl_->members.emplace_back();
-    const Aabb b = impl_->region_bounds(r);
-    const Aabb near{b.lo - Vec2{kRegionMargin, kRegionMargin}, b.hi + Vec2{kRegionMargin, kRegionMargin}};
     b2BodyDef def;
     def.type = b2_staticBody;
     b2Body* ground = impl_->worlds.back()->CreateBody(&def);
+    const Aabb b = count > 1 ? impl_->regions.cell_bounds(r) : layout.bounds;
+    const Aabb near{b.lo - Vec2{kRegionMargin, kRegionMargin}, b.hi + Vec2{kRegionMargin, kRegionMargin}};
     for (const Shape& sh : obstacles) {
       if (count == 1 || sh.bounds.overlaps(near)) add_obstacle(ground, sh);
     }

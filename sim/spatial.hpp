@@ -14,29 +14,47 @@
 
 namespace swarmpath::sim {
 
-/// The cell arithmetic both grids share: a rectangle cut into nx x ny square cells; points
-/// outside (or NaN) clamp to the border cells.
+/// The cell arithmetic the grids (and the physics regions) share: a rectangle cut into nx x ny
+/// cells; points outside (or NaN) clamp to the border cells.
 struct CellFrame {
   Vec2 lo;
-  double inv_cell = 1.0;
+  double inv_cell_x = 1.0;
+  double inv_cell_y = 1.0;
   int nx = 1;
   int ny = 1;
 
   CellFrame() = default;
 
+  /// Square cells of side `cell`, enough to cover `bounds`.
   CellFrame(Aabb bounds, double cell)
       : lo(bounds.lo),
-        inv_cell(1.0 / cell),
+        inv_cell_x(1.0 / cell),
+        inv_cell_y(1.0 / cell),
         nx(std::max(1, static_cast<int>(std::ceil((bounds.hi.x - bounds.lo.x) / cell)))),
         ny(std::max(1, static_cast<int>(std::ceil((bounds.hi.y - bounds.lo.y) / cell)))) {}
 
+  /// `bounds` cut into nx x ny equal rectangles.
+  CellFrame(Aabb bounds, int cells_x, int cells_y)
+      : lo(bounds.lo),
+        inv_cell_x(cells_x / (bounds.hi.x - bounds.lo.x)),
+        inv_cell_y(cells_y / (bounds.hi.y - bounds.lo.y)),
+        nx(cells_x),
+        ny(cells_y) {}
+
   std::size_t cells() const { return static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny); }
 
-  int cell_x(double x) const { return clamp_cell((x - lo.x) * inv_cell, nx); }
+  int cell_x(double x) const { return clamp_cell((x - lo.x) * inv_cell_x, nx); }
 
-  int cell_y(double y) const { return clamp_cell((y - lo.y) * inv_cell, ny); }
+  int cell_y(double y) const { return clamp_cell((y - lo.y) * inv_cell_y, ny); }
 
   int index(Vec2 p) const { return cell_y(p.y) * nx + cell_x(p.x); }
+
+  /// Cell `index`'s rectangle.
+  Aabb cell_bounds(int index) const {
+    const Vec2 size{1.0 / inv_cell_x, 1.0 / inv_cell_y};
+    const Vec2 at = lo + Vec2{size.x * (index % nx), size.y * (index / nx)};
+    return {at, at + size};
+  }
 
  private:
   static int clamp_cell(double v, int n) {
