@@ -45,6 +45,9 @@ void sense_robot(const SensorView& view, const World& w, std::size_t i, Percept&
 void sense_all(const Scenario& s, const Params& p, World& w) {
   const SensorView view = sensor_view(s, p, w);
   const std::size_t n = w.poses.size();
+  w.percepts.resize(n);
+  w.blob_begin.resize(n + 1);
+  w.rab_begin.resize(n + 1);
   w.blobs.clear();
   w.rab_inbox.clear();
   for (std::size_t i = 0; i < n; ++i) {

@@ -151,11 +151,9 @@ World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t se
   w.grid.reset(grid_bounds(s), s.sim.grid_cell, n);
   w.grid.build(w.positions);
 
-  w.percepts.assign(n, Percept{});
-  w.blob_begin.assign(n + 1, 0);
-  w.rab_begin.assign(n + 1, 0);
-  if (w.needs.camera) w.blobs.reserve(16 * n);
-  if (w.needs.rab) w.rab_inbox.reserve(16 * n);
+  // step() senses one robot at a time (sense_all sizes the per-robot buffers when first called)
+  if (w.needs.camera) w.blobs.reserve(64);
+  if (w.needs.rab) w.rab_inbox.reserve(64);
   return w;
 }
 

@@ -41,7 +41,7 @@ struct World {
 
   // per-tick sensor buffers, reused so that a tick allocates nothing after warm-up
   SensorNeeds needs;
-  std::vector<Percept> percepts;  ///< filled by sense_all (phase by phase); step() needs one at a time
+  std::vector<Percept> percepts;  ///< sized and filled by sense_all (phase by phase); step() needs one
   std::vector<Blob> blobs;
   std::vector<std::size_t> blob_begin;
   std::vector<RabMessage> rab_inbox;
