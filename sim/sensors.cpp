@@ -43,9 +43,9 @@ bool blocked_by_statics(const SensorView& v, const NearShapes& near, Vec2 a, Vec
 bool blocked_by_robots(const SensorView& v, int self, int target, Vec2 a, Vec2 b) {
   bool hit = false;
   const Vec2 mid = 0.5 * (a + b);
-  v.grid->for_each_within(v.positions, mid, 0.5 * dist(a, b) + kRobotRadius, [&](int k) {
+  v.grid->for_each_within(mid, 0.5 * dist(a, b) + kRobotRadius, [&](int k, Vec2 pk) {
     if (hit || k == self || k == target) return;
-    hit = segment_hits_circle(v.positions[static_cast<std::size_t>(k)], kRobotRadius, a, b);
+    hit = segment_hits_circle(pk, kRobotRadius, a, b);
   });
   return hit;
 }
@@ -79,9 +79,9 @@ void sense_proximity(const SensorView& v, int id, std::array<double, kProximityC
   double rx[kMaxRobots];
   double ry[kMaxRobots];
   int n = 0;
-  v.grid->for_each_within(v.positions, me.p, reach + R, [&](int j) {
+  v.grid->for_each_within(me.p, reach + R, [&](int j, Vec2 pj) {
     if (j == id || n == kMaxRobots) return;
-    const Vec2 q = me.to_local(v.positions[static_cast<std::size_t>(j)] - me.p);
+    const Vec2 q = me.to_local(pj - me.p);
     rx[n] = q.x;
     ry[n++] = q.y;
   });
@@ -169,11 +169,10 @@ void sense_camera(const SensorView& v, int id, std::vector<Blob>& out) {
   if (dist(me.p, v.goal) <= range && !blocked_by_statics(v, near, me.p, v.goal))
     emit(v.goal, Led::kYellow, kGoalEmitter, kNobody);
   // then robots with lit LEDs, in grid order
-  v.grid->for_each_within(v.positions, me.p, range, [&](int j) {
+  v.grid->for_each_within(me.p, range, [&](int j, Vec2 pj) {
     if (j == id) return;
     const Led led = v.leds[static_cast<std::size_t>(j)];
     if (led == Led::kBlack) return;
-    const Vec2 pj = v.positions[static_cast<std::size_t>(j)];
     if (!ring_visible(v, near, id, j, me.p, pj)) return;
     emit(pj, led, j, v.tags[static_cast<std::size_t>(j)]);
   });
@@ -182,9 +181,8 @@ void sense_camera(const SensorView& v, int id, std::vector<Blob>& out) {
 void sense_rab(const SensorView& v, int id, std::vector<RabMessage>& out) {
   const Pose& me = v.poses[static_cast<std::size_t>(id)];
   const NearShapes near(v, *v.rab_bins, me.p, kRabRange);
-  v.grid->for_each_within(v.positions, me.p, kRabRange, [&](int j) {
+  v.grid->for_each_within(me.p, kRabRange, [&](int j, Vec2 pj) {
     if (j == id || !v.rab_sending[static_cast<std::size_t>(j)]) return;
-    const Vec2 pj = v.positions[static_cast<std::size_t>(j)];
     if (blocked_by_statics(v, near, me.p, pj)) return;
     const Vec2 d = pj - me.p;
     out.push_back({j, 100.0 * norm(d), angle_of(me.to_local(d)), v.rab_out[static_cast<std::size_t>(j)]});

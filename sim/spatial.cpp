@@ -33,6 +33,7 @@ void RobotGrid::reset(Aabb bounds, double cell, std::size_t robots) {
   frame_ = CellFrame(bounds, cell);
   start_.assign(frame_.cells() + 1, 0);
   items_.assign(robots, 0);
+  sorted_.assign(robots, Vec2{});
   cell_of_.assign(robots, 0);
 }
 
@@ -47,7 +48,9 @@ void RobotGrid::build(std::span<const Vec2> positions) {
   // stable fill: walk ids in order, using a cursor per cell (reuse start_ shifted by one)
   for (std::size_t id = 0; id < positions.size(); ++id) {
     const auto c = static_cast<std::size_t>(cell_of_[id]);
-    items_[static_cast<std::size_t>(start_[c]++)] = static_cast<int>(id);
+    const auto k = static_cast<std::size_t>(start_[c]++);
+    items_[k] = static_cast<int>(id);
+    sorted_[k] = positions[id];
   }
   // start_[c] now holds the end of cell c; shift right to restore the starts
   for (std::size_t c = start_.size() - 1; c > 0; --c) start_[c] = start_[c - 1];

@@ -85,15 +85,19 @@ class ShapeBins {
   std::vector<int> items_;
 };
 
-/// Robots bucketed by cell with a stable counting sort: within a cell, ids ascend.
+/// Robots bucketed by cell with a stable counting sort: within a cell, ids ascend. The grid keeps
+/// its own copy of the positions in that order, so a query reads each cell's robots from one
+/// contiguous run instead of one scattered line per neighbour (at 10 000 robots those lines have
+/// left the cache between ticks).
 class RobotGrid {
  public:
   void reset(Aabb bounds, double cell, std::size_t robots);
   void build(std::span<const Vec2> positions);
 
-  /// Calls f(j) for every robot j within r of p (p's own robot included), in cell then id order.
+  /// Calls f(j, position of j) for every robot j within r of p (p's own robot included), in cell
+  /// then id order.
   template <typename F>
-  void for_each_within(std::span<const Vec2> positions, Vec2 p, double r, F&& f) const {
+  void for_each_within(Vec2 p, double r, F&& f) const {
     const int i0 = frame_.cell_x(p.x - r);
     const int i1 = frame_.cell_x(p.x + r);
     const int j0 = frame_.cell_y(p.y - r);
@@ -101,12 +105,11 @@ class RobotGrid {
     const double r2 = r * r;
     for (int j = j0; j <= j1; ++j) {
       const int row = j * frame_.nx;
-      for (int i = i0; i <= i1; ++i) {
-        const int c = row + i;
-        for (int k = start_[c]; k < start_[c + 1]; ++k) {
-          const int id = items_[k];
-          if (norm2(positions[id] - p) <= r2) f(id);
-        }
+      // a row's cells i0..i1 are one contiguous run of items
+      const int end = start_[row + i1 + 1];
+      for (int k = start_[row + i0]; k < end; ++k) {
+        const Vec2 q = sorted_[static_cast<std::size_t>(k)];
+        if (norm2(q - p) <= r2) f(items_[static_cast<std::size_t>(k)], q);
       }
     }
   }
@@ -115,6 +118,7 @@ class RobotGrid {
   CellFrame frame_;
   std::vector<int> start_;
   std::vector<int> items_;
+  std::vector<Vec2> sorted_;  // sorted_[k] = the position of robot items_[k]
   std::vector<int> cell_of_;
 };
 

@@ -1,0 +1,60 @@
+// SPDX-License-Identifier: MIT
+// The robot grid the sensors query: every robot within r, each once, in cell then id order, with
+// the position it was built from (the grid reads its own cell-sorted copy of the positions).
+#include "sim/spatial.hpp"
+
+#include <algorithm>
+#include <utility>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "sim/rng.hpp"
+
+namespace swarmpath::sim {
+namespace {
+
+TEST(RobotGrid, FindsExactlyTheRobotsWithinRangeInCellThenIdOrderWithTheirPositions) {
+  const Aabb bounds{{-5.0, -3.0}, {5.0, 3.0}};
+  const double cell = 0.7;
+  const CellFrame frame(bounds, cell);
+  Rng rng(42);
+  std::vector<Vec2> positions(500);
+  for (Vec2& p : positions) p = {rng.uniform(-5.5, 5.5), rng.uniform(-3.5, 3.5)};  // some outside
+  RobotGrid grid;
+  grid.reset(bounds, cell, positions.size());
+  grid.build(positions);
+  for (int q = 0; q < 200; ++q) {
+    const Vec2 p{rng.uniform(-5.0, 5.0), rng.uniform(-3.0, 3.0)};
+    const double r = rng.uniform(0.05, 1.5);
+    std::vector<std::pair<int, int>> found;  // (cell, id)
+    grid.for_each_within(p, r, [&](int id, Vec2 at) {
+      EXPECT_EQ(at.x, positions[static_cast<std::size_t>(id)].x);
+      EXPECT_EQ(at.y, positions[static_cast<std::size_t>(id)].y);
+      found.emplace_back(frame.index(at), id);
+    });
+    std::vector<std::pair<int, int>> expected;
+    for (std::size_t id = 0; id < positions.size(); ++id) {
+      if (norm2(positions[id] - p) <= r * r)
+        expected.emplace_back(frame.index(positions[id]), static_cast<int>(id));
+    }
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(found, expected) << "query " << q << " at (" << p.x << ", " << p.y << ") r " << r;
+  }
+}
+
+TEST(RobotGrid, ARebuildForgetsTheOldPositions) {
+  const Aabb bounds{{0.0, 0.0}, {4.0, 4.0}};
+  RobotGrid grid;
+  grid.reset(bounds, 1.0, 2);
+  std::vector<Vec2> positions{{0.5, 0.5}, {3.5, 3.5}};
+  grid.build(positions);
+  positions = {{3.4, 3.4}, {0.6, 0.6}};
+  grid.build(positions);
+  std::vector<int> near_origin;
+  grid.for_each_within({0.5, 0.5}, 0.3, [&](int id, Vec2) { near_origin.push_back(id); });
+  EXPECT_EQ(near_origin, std::vector<int>{1});
+}
+
+}  // namespace
+}  // namespace swarmpath::sim
