@@ -91,6 +91,7 @@ const std::array kTable{
   ParamInfo{ 0, "nest_wait", R, &P::nest_wait, 0.5, 0.1, 1, 0.05, "", "", "task allocation: decision makers and allocated robots waiting their turn drive to within this fraction of R_nest_reach of the nest, then stop", {}},
   ParamInfo{ 0, "founder_wait", R, &P::founder_wait, 0.9, 0.1, 1, 0.05, "", "", "task allocation: the founder stops this fraction of R_nest_reach from the nest to run the protocol, at the rim of the decision makers' crowd, so that it can lead the allocated robots out", {}},
   ParamInfo{ 0, "seek_hidden_reference", B, &P::seek_hidden_reference, 1, 0, 1, 1, "", "", "a robot that begins an alignment with a reference out of view (behind an obstacle's corner) first drives toward where it last saw it, instead of turning RECOVERY", {}},
+  ParamInfo{ 0, "trail_slack",    R, &P::trail_slack,    45,   0,    3000,  5,    "",    "cm",    "a forming robot retracing its own way home (round an obstacle) stops as a subgoal only where it is at most this much farther from the nest than its target (3000, more than any arena's diagonal: anywhere on its way, the behaviour before stop 21)", {}},
   ParamInfo{ 0, "backoff_far_spot", B, &P::backoff_far_spot, 1, 0, 1,     1,    "",    "",      "a forming robot that found the goal from its far side (farther from the nest than the goal) backs off to the spot, not along its own way", {}},
 };
 

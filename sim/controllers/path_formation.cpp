@@ -218,8 +218,10 @@ bool resting_time_over(const PfContext& c) {  // row 4, label i
 }
 
 bool nestward_of_target(const PfContext& c, Vec2 at) {
-  // retracing its own way home (which may wind round obstacles) counts as nestward
-  return c.on_trail || dist(at, c.nest) < dist(c.m.target.last_seen, c.nest);
+  // nearer the nest than the target; retracing its own way home (which may wind round an
+  // obstacle's end) a robot may stop up to trail_slack farther [R]: more, and the chain knots
+  const double slack = c.on_trail ? c.p.trail_slack * kCm : 0.0;
+  return dist(at, c.nest) < dist(c.m.target.last_seen, c.nest) + slack;
 }
 
 bool found_subgoal_nearer_nest(const PfContext& c) {  // row 5r, label c while forming

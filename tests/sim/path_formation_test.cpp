@@ -51,11 +51,11 @@ Tracked tracked(int id, Vec2 at) {
 }
 
 // perceive, then apply the table; returns the row that fired ("" for none)
-std::string fire(PfMemory& m, const Reading& r, const Params& p = {}) {
+std::string fire(PfMemory& m, const Reading& r, const Params& p = {}, bool on_trail = false) {
   const Percept in = r.percept();
   PfSight sight;
   pf_perceive(in, p, kNest, m, sight);
-  const PfContext c{in, p, m, sight, kNest, false};
+  const PfContext c{in, p, m, sight, kNest, on_trail};
   const PfTransition* row = pf_transition(c, m);
   return row ? std::string(row->row) : std::string();
 }
@@ -225,6 +225,30 @@ TEST(PfTable, Row5SubgoalAtDsubFromTheTarget) {
   Reading r2;
   r2.add(Led::kRed, 7, 0, 60);
   EXPECT_EQ(fire(near, r2), "");
+}
+
+// R: trail_slack. Row 5's "in between the starting point and the detected subgoal": a robot
+// retracing its own way home may stop up to trail_slack (45 cm) farther from the nest than its
+// target (round an obstacle's end), not anywhere on the way (stop 21: chains knotted by the goal)
+TEST(PfTable, Row5OnTheTrailStopsAtMostTrailSlackFartherFromTheNest) {
+  const Vec2 behind{-0.75, 0.0};  // the target 75 cm nearer the nest than the robot
+  const Vec2 aside{0.75 * std::cos(deg2rad(120)), 0.75 * std::sin(deg2rad(120))};  // 33 cm nearer
+  const auto sees = [](double bearing_deg) {
+    Reading r;
+    r.add(Led::kRed, 7, bearing_deg, 75);
+    return r;
+  };
+  const Params p;
+  PfMemory m = forming(behind);
+  EXPECT_EQ(fire(m, sees(180), p, true), "");  // 75 cm > trail_slack
+  m = forming(aside);
+  EXPECT_EQ(fire(m, sees(120), p, true), "#5");  // 33 cm <= trail_slack
+  m = forming(aside);
+  EXPECT_EQ(fire(m, sees(120), p, false), "");  // off the trail the target must be farther
+  Params anywhere;
+  anywhere.trail_slack = 3000;  // the behaviour before stop 21
+  m = forming(behind);
+  EXPECT_EQ(fire(m, sees(180), anywhere, true), "#5");
 }
 
 TEST(PfTable, Row5rRetargetsToTheSubgoalNearerTheNest) {  // label c while forming
