@@ -17,7 +17,6 @@ namespace swarmpath::sim {
 /// What the sensors read: the world as it stood after the last physics step.
 struct SensorView {
   std::span<const Pose> poses;
-  std::span<const Vec2> positions;  ///< = poses[i].p, contiguous for the grid
   std::span<const Led> leds;
   std::span<const int> tags;
   std::span<const std::uint8_t> rab_sending;

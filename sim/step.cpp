@@ -8,7 +8,6 @@ namespace swarmpath::sim {
 SensorView sensor_view(const Scenario& s, const Params& p, const World& w) {
   SensorView view;
   view.poses = w.poses;
-  view.positions = w.positions;
   view.leds = w.leds;
   view.tags = w.tags;
   view.rab_sending = w.rab_sending;
