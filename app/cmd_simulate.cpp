@@ -30,6 +30,9 @@ struct SimulateOptions {
   bool keep_running = false;
   std::string svg;
   bool trails = false;
+  std::string heatmap;
+  std::string heatmap_led;
+  double heatmap_cell_cm = 25.0;
   bool json = false;
 };
 
@@ -61,6 +64,15 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
   // trails: one sample per robot every `every` ticks, at most ~1500 samples per robot
   const std::int64_t every = std::max<std::int64_t>(1, s.sim.max_ticks / 1500);
   std::vector<std::vector<sim::Vec2>> trails;
+  std::optional<sim::Occupancy> occupancy;
+  if (!o.heatmap.empty()) {
+    if (!(o.heatmap_cell_cm >= 1.0 && o.heatmap_cell_cm <= 500.0)) {
+      throw sim::ConfigError("--heatmap-cell", 0, "", "must be within 1-500 cm");
+    }
+    std::optional<sim::Led> only;
+    if (!o.heatmap_led.empty()) only = led_from_option("--heatmap-led", o.heatmap_led);
+    occupancy.emplace(s.arena_bounds(), o.heatmap_cell_cm / 100.0, only);
+  }
   const bool progress = stderr_is_terminal();
   const Stopwatch clock;
   double next_report = 1.0;
@@ -69,6 +81,7 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
       trails.resize(w.poses.size());
       for (std::size_t i = 0; i < w.poses.size(); ++i) trails[i].push_back(w.poses[i].p);
     }
+    if (occupancy) occupancy->add(w.poses, w.leds);
     if (progress && w.tick % 256 == 0 && clock.seconds() > next_report) {
       next_report = clock.seconds() + 0.5;
       err << "\r  tick " << w.tick << " / " << s.sim.max_ticks << " (" << (100 * w.tick / s.sim.max_ticks)
@@ -93,20 +106,30 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
   const bool pf = mode == sim::Mode::kPathFormation || mode == sim::Mode::kTaskAllocation;
   const bool ta = mode == sim::Mode::kTaskAllocation;
 
-  if (!o.svg.empty()) {
+  // both pictures: the run in the caption, the A* and the formed paths drawn
+  const auto picture = [&](const std::string& what) {
     Picture pic;
     pic.scenario = &s;
-    pic.world = &world;
-    pic.trails = std::move(trails);
-    pic.caption.push_back(std::to_string(m.robots) + " robots, seed " + std::to_string(o.seed) + ", mode " +
-                          std::string(sim::to_string(mode)) + ", tick " + std::to_string(m.ticks) +
-                          ", state_hash " + sim::to_hex(m.state_hash));
+    pic.caption.push_back(what + std::to_string(m.robots) + " robots, seed " + std::to_string(o.seed) +
+                          ", mode " + std::string(sim::to_string(mode)) + ", tick " +
+                          std::to_string(m.ticks) + ", state_hash " + sim::to_hex(m.state_hash));
     if (pf) {
       pic.caption.push_back(m.success ? "path complete at tick " + std::to_string(m.ticks_to_form)
                                       : std::string("path not complete"));
     }
     add_path_lines(pic, m, a8 ? &*a8 : nullptr);
+    return pic;
+  };
+  if (!o.svg.empty()) {
+    Picture pic = picture("");
+    pic.world = &world;
+    pic.trails = std::move(trails);
     write_svg_file(o.svg, pic);
+  }
+  if (occupancy) {
+    Picture pic = picture("where the robots were until the end: ");
+    pic.occupancy = &*occupancy;
+    write_svg_file(o.heatmap, pic);
   }
 
   if (o.json) {
@@ -133,6 +156,7 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
     j["wall_seconds"] = seconds;
     j["robot_ticks_per_second"] = robot_ticks_per_s;
     if (!o.svg.empty()) j["svg"] = o.svg;
+    if (!o.heatmap.empty()) j["heatmap"] = o.heatmap;
     out << j.dump(2) << "\n";
     return kExitOk;
   }
@@ -167,6 +191,7 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
   out << "  wall time     " << fixed(seconds, 3) << " s (" << fixed(robot_ticks_per_s / 1e6, 2)
       << " M robot-ticks/s)\n";
   if (!o.svg.empty()) out << "  picture       " << o.svg << "\n";
+  if (!o.heatmap.empty()) out << "  heat map      " << o.heatmap << "\n";
   return kExitOk;
 }
 
@@ -192,6 +217,15 @@ Runner add_simulate(CLI::App& app) {
                  "Write a picture of the final state: robots by LED colour; A* red, subgoal path blue, "
                  "optimisation-1 purple, optimisation-2 green");
   app.add_flag("--trails", o->trails, "Draw every robot's trail in the SVG");
+  app.add_option(
+      "--heatmap", o->heatmap,
+      "Write a heat map of where the robots spent the run (SVG): robot-ticks per cell on a log colour "
+      "scale, with the A* and the formed paths");
+  app.add_option("--heatmap-led", o->heatmap_led,
+                 "Count only robots showing this LED colour in the heat map, e.g. green (exploring), red "
+                 "(subgoals), gray50 (returning), black (resting); default: all robots");
+  app.add_option("--heatmap-cell", o->heatmap_cell_cm, "Heat-map cell side in cm (1-500)")
+      ->capture_default_str();
   app.add_flag("--json", o->json, "Print one JSON object instead of the text summary");
   return [o](std::ostream& out, std::ostream& err) { return run_simulate(*o, out, err); };
 }

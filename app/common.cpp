@@ -23,6 +23,16 @@ sim::Mode mode_from_option(const std::string& text) {
   throw sim::ConfigError("--mode", 0, "", "unknown mode \"" + text + "\" (choices: " + choices + ")");
 }
 
+sim::Led led_from_option(const std::string& option, const std::string& text) {
+  std::string choices;
+  for (int k = 0; k < sim::kLedCount; ++k) {
+    const auto led = static_cast<sim::Led>(k);
+    if (sim::name(led) == text) return led;
+    choices += (choices.empty() ? "" : ", ") + std::string(sim::name(led));
+  }
+  throw sim::ConfigError(option, 0, "", "unknown LED colour \"" + text + "\" (choices: " + choices + ")");
+}
+
 sim::Scenario scenario_with_overrides(const std::string& path, std::optional<std::int64_t> robots,
                                       std::optional<std::int64_t> ticks) {
   sim::Scenario s = sim::load_scenario(path);

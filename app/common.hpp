@@ -23,6 +23,9 @@ sim::Params params_or_defaults(const std::string& path);
 /// Parses --mode; throws ConfigError listing the choices.
 sim::Mode mode_from_option(const std::string& text);
 
+/// A LED colour from its SPEC §2.2 name (green, red, ...); throws ConfigError naming `option`.
+sim::Led led_from_option(const std::string& option, const std::string& text);
+
 /// A scenario with the command line's overrides (robots, ticks) applied and checked.
 sim::Scenario scenario_with_overrides(const std::string& path, std::optional<std::int64_t> robots,
                                       std::optional<std::int64_t> ticks);

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "svg.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
 #include <ostream>
@@ -36,14 +38,58 @@ struct Frame {
   double y(double wy) const { return top + (arena.hi.y - wy) * k; }
 };
 
+// the occupancy layer: cells by density on a log scale, and a legend line
+void write_occupancy(std::ostream& out, const Frame& f, const sim::Occupancy& occ, double& max_density) {
+  max_density = 0.0;
+  for (int iy = 0; iy < occ.cells_y(); ++iy) {
+    for (int ix = 0; ix < occ.cells_x(); ++ix) max_density = std::max(max_density, occ.density(ix, iy));
+  }
+  if (max_density <= 0.0) return;
+  out << "<g stroke=\"none\">\n";
+  for (int iy = 0; iy < occ.cells_y(); ++iy) {
+    for (int ix = 0; ix < occ.cells_x(); ++ix) {
+      if (occ.count(ix, iy) == 0) continue;
+      const sim::Aabb b = occ.cell_bounds(ix, iy);
+      const double hi_x = std::min(b.hi.x, f.arena.hi.x);
+      const double hi_y = std::min(b.hi.y, f.arena.hi.y);
+      out << "<rect x=\"" << f.x(b.lo.x) << "\" y=\"" << f.y(hi_y) << "\" width=\"" << (hi_x - b.lo.x) * f.k
+          << "\" height=\"" << (hi_y - b.lo.y) * f.k << "\" fill=\""
+          << heat_color(heat_level(occ.density(ix, iy), max_density)) << "\"/>";
+    }
+    out << "\n";
+  }
+  out << "</g>\n";
+}
+
 }  // namespace
+
+std::string heat_color(double t) {
+  // YlOrRd: pale yellow, orange, dark red
+  constexpr double kStops[3][3] = {{255, 255, 178}, {253, 141, 60}, {128, 0, 38}};
+  t = std::clamp(t, 0.0, 1.0);
+  const int k = t < 0.5 ? 0 : 1;
+  const double u = t < 0.5 ? 2.0 * t : 2.0 * t - 1.0;
+  std::ostringstream o;
+  o << '#' << std::hex << std::setfill('0');
+  for (int c = 0; c < 3; ++c) {
+    const double v = kStops[k][c] + u * (kStops[k + 1][c] - kStops[k][c]);
+    o << std::setw(2) << static_cast<int>(std::lround(v));
+  }
+  return o.str();
+}
+
+double heat_level(double density, double max_density) {
+  if (!(density > 0.0) || !(max_density > 0.0)) return 0.0;
+  return std::clamp(1.0 + 0.5 * std::log10(density / max_density), 0.0, 1.0);
+}
 
 void write_svg(std::ostream& out, const Picture& pic) {
   const sim::Scenario& s = *pic.scenario;
   const double header = 22.0 + 16.0 * static_cast<double>(pic.caption.size());
   const Frame f{s.arena_bounds(), pic.px_per_m, header};
   const double width = s.arena_size.x * f.k;
-  const double height = header + s.arena_size.y * f.k + 8.0 + 16.0 * static_cast<double>(pic.lines.size());
+  const double legend_lines = static_cast<double>(pic.lines.size()) + (pic.occupancy != nullptr ? 1.0 : 0.0);
+  const double height = header + s.arena_size.y * f.k + 8.0 + 16.0 * legend_lines;
   out << std::fixed << std::setprecision(2);
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
       << "\" viewBox=\"0 0 " << width << ' ' << height << "\" font-family=\"sans-serif\">\n";
@@ -67,6 +113,8 @@ void write_svg(std::ostream& out, const Picture& pic) {
         << "\" y2=\"" << f.y(gy) << "\"/>\n";
   }
   out << "</g>\n";
+  double max_density = 0.0;
+  if (pic.occupancy != nullptr) write_occupancy(out, f, *pic.occupancy, max_density);
   // deployment region
   const sim::Aabb dep = s.deployment.bounds();
   out << "<rect x=\"" << f.x(dep.lo.x) << "\" y=\"" << f.y(dep.hi.y) << "\" width=\""
@@ -146,6 +194,19 @@ void write_svg(std::ostream& out, const Picture& pic) {
         << "\" stroke-width=\"3\"/><text x=\"42\" y=\"" << ly << "\" font-size=\"12\">"
         << xml_escape(line.label) << "</text>\n";
     ly += 16.0;
+  }
+  if (pic.occupancy != nullptr) {
+    const sim::Occupancy& occ = *pic.occupancy;
+    for (int i = 0; i < 5; ++i) {
+      out << "<rect x=\"" << 8 + 6 * i << "\" y=\"" << ly - 10 << "\" width=\"6\" height=\"10\" fill=\""
+          << heat_color(0.25 * i) << "\"/>";
+    }
+    std::ostringstream what;
+    what << std::setprecision(3) << "occupancy of "
+         << (occ.only() ? std::string(sim::name(*occ.only())) : "all") << " robots over " << occ.ticks()
+         << " ticks, " << occ.cell_m() * 100.0 << " cm cells, log scale: darkest " << max_density
+         << " robots/m², palest 1/100 of it or less";
+    out << "<text x=\"42\" y=\"" << ly << "\" font-size=\"12\">" << xml_escape(what.str()) << "</text>\n";
   }
   out << "</svg>\n";
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/occupancy.hpp"
 #include "sim/scenario.hpp"
 #include "sim/world.hpp"
 
@@ -26,10 +27,17 @@ struct Picture {
   std::vector<Polyline> lines;                 ///< drawn in order, over the arena
   std::vector<std::vector<sim::Vec2>> trails;  ///< per-robot trails (thin, grey)
   std::vector<std::string> caption;            ///< lines of text under the title
+  const sim::Occupancy* occupancy = nullptr;   ///< drawn on the floor as a heat map (optional)
   double px_per_m = 50.0;
 };
 
 void write_svg(std::ostream& out, const Picture& pic);
+
+/// Colour of an occupancy cell: `t` in [0, 1] from pale yellow (0) through orange to dark red (1).
+std::string heat_color(double t);
+
+/// Where a density falls on the picture's log scale: 0 at max / 100 or below, 1 at max.
+double heat_level(double density, double max_density);
 
 /// Writes to `path`; throws std::runtime_error when the file cannot be written.
 void write_svg_file(const std::string& path, const Picture& pic);

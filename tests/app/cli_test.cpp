@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "app/svg.hpp"
 #include "tests/app/cli_support.hpp"
 
 namespace swarmpath::app {
@@ -137,6 +138,42 @@ TEST(Cli, SimulateWritesAnSvgPicture) {
   EXPECT_NE(text.find("#e00000"), std::string::npos);  // the A* path in red
   EXPECT_NE(text.find("#00ff00"), std::string::npos);  // robots with green LEDs
   EXPECT_NE(text.find("</svg>"), std::string::npos);
+}
+
+TEST(Cli, SimulateWritesAHeatMapOfWhereTheRobotsWere) {
+  const auto dir = temp_file("h", "").parent_path();
+  const auto map = dir / "env1_heat.svg";
+  const Result r = cli({"simulate", "--scenario", env(1), "--robots", "10", "--ticks", "40", "--heatmap",
+                        map.string(), "--heatmap-led", "green", "--heatmap-cell", "50"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("heat map"), std::string::npos) << r.out;
+  std::ifstream in(map);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string text = ss.str();
+  EXPECT_EQ(text.rfind("<svg", 0), 0u);
+  EXPECT_NE(text.find("occupancy of green robots over 40 ticks, 50 cm cells"), std::string::npos);
+  EXPECT_NE(text.find(heat_color(1.0)), std::string::npos);  // the busiest cell is drawn darkest
+  EXPECT_NE(text.find("#e00000"), std::string::npos);        // with the A* path
+  // bad colour or cell size: exit 2, naming the option
+  const Result bad = cli({"simulate", "--scenario", env(1), "--ticks", "5", "--heatmap", map.string(),
+                          "--heatmap-led", "greem"});
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--heatmap-led: unknown LED colour \"greem\""), std::string::npos) << bad.err;
+  EXPECT_EQ(cli({"simulate", "--scenario", env(1), "--ticks", "5", "--heatmap", map.string(),
+                 "--heatmap-cell", "0"})
+                .code,
+            2);
+}
+
+TEST(Svg, HeatLevelIsALogScaleOverTwoDecadesBelowTheBusiestCell) {
+  EXPECT_DOUBLE_EQ(heat_level(8.0, 8.0), 1.0);
+  EXPECT_DOUBLE_EQ(heat_level(0.8, 8.0), 0.5);
+  EXPECT_DOUBLE_EQ(heat_level(0.08, 8.0), 0.0);
+  EXPECT_DOUBLE_EQ(heat_level(0.001, 8.0), 0.0);
+  EXPECT_EQ(heat_color(0.0), "#ffffb2");  // pale yellow
+  EXPECT_EQ(heat_color(0.5), "#fd8d3c");  // orange
+  EXPECT_EQ(heat_color(1.0), "#800026");  // dark red
 }
 
 std::string slurp(const std::filesystem::path& path) {

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// The occupancy heat map's counts: each booked tick adds one per robot to the cell it stands in,
+// only robots with the wanted LED when one is given, none outside the arena.
+#include "sim/occupancy.hpp"
+
+#include <vector>
+
+#include <gtest/gtest.h>
+
+namespace swarmpath::sim {
+namespace {
+
+Pose at(double x, double y) { return Pose{{x, y}, 1.0, 0.0}; }
+
+TEST(Occupancy, CountsEachRobotInTheCellItStandsInOncePerTick) {
+  Occupancy occ({{-2.0, -1.0}, {2.0, 1.0}}, 0.5);
+  ASSERT_EQ(occ.cells_x(), 8);
+  ASSERT_EQ(occ.cells_y(), 4);
+  const std::vector<Pose> poses = {at(-1.9, -0.9), at(-1.8, -0.8), at(1.9, 0.9), at(5.0, 0.0)};
+  const std::vector<Led> leds(poses.size(), Led::kGreen);
+  occ.add(poses, leds);
+  occ.add(poses, leds);
+  EXPECT_EQ(occ.ticks(), 2);
+  EXPECT_EQ(occ.count(0, 0), 4);  // two robots in the south-west cell, two ticks
+  EXPECT_EQ(occ.count(7, 3), 2);  // north-east
+  std::int64_t total = 0;
+  for (int iy = 0; iy < occ.cells_y(); ++iy)
+    for (int ix = 0; ix < occ.cells_x(); ++ix) total += occ.count(ix, iy);
+  EXPECT_EQ(total, 6);  // the robot outside the arena is not counted
+  // two robots on 0.25 m^2 on average: 8 robots per m^2
+  EXPECT_DOUBLE_EQ(occ.density(0, 0), 8.0);
+  EXPECT_DOUBLE_EQ(occ.density(1, 0), 0.0);
+}
+
+TEST(Occupancy, CountsOnlyTheWantedLedColour) {
+  Occupancy occ({{0.0, 0.0}, {1.0, 1.0}}, 1.0, Led::kGreen);
+  const std::vector<Pose> poses = {at(0.5, 0.5), at(0.6, 0.5), at(0.7, 0.5)};
+  const std::vector<Led> leds = {Led::kGreen, Led::kRed, Led::kGreen};
+  occ.add(poses, leds);
+  EXPECT_EQ(occ.count(0, 0), 2);
+  EXPECT_EQ(occ.only(), Led::kGreen);
+}
+
+}  // namespace
+}  // namespace swarmpath::sim
