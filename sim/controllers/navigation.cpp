@@ -10,8 +10,12 @@ namespace swarmpath::sim {
 
 void nav_reset(NavMemory& nav) { nav = NavMemory{}; }
 
-bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, const Percept& in,
-                Vec2 wanted) {
+bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, const Percept& in, Vec2 wanted,
+                bool crowded) {
+  if (crowded) {
+    nav_reset(nav);
+    return false;
+  }
   constexpr double kProgress = 5.0;        // cm that count as progress
   constexpr double kLeave = 20.0;          // cm past the start of a following that end it
   constexpr std::int64_t kEdgeLost = 100;  // ticks without a reading that end it
@@ -101,9 +105,11 @@ Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trai
   return field;
 }
 
-Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Vec2 point) {
+Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Vec2 point, bool crowded) {
   const Vec2 field = field_toward(in.pose, point);
-  if (nav_update(nav, p, rng, -100.0 * dist(in.pose.p, point), in, field)) return follow_edge(in, nav.side);
+  if (nav_update(nav, p, rng, -100.0 * dist(in.pose.p, point), in, field, crowded)) {
+    return follow_edge(in, nav.side);
+  }
   return field;
 }
 

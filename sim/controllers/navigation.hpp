@@ -41,15 +41,19 @@ void nav_reset(NavMemory& nav);
 /// past where it began AND the sensors facing `wanted` (robot frame, the field's direction) read
 /// nothing, or when the edge has been out of range for 100 ticks. A following that runs out
 /// flips the side for the next. Returns whether the robot should follow an edge this tick.
-bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, const Percept& in,
-                Vec2 wanted);
+/// `crowded` [R nest_crowd]: among robots packed round the nest, an edge is only another robot
+/// and following it leads nowhere; the navigator forgets its record and leaves the way to the field.
+bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, const Percept& in, Vec2 wanted,
+                bool crowded = false);
 
 /// Robot-frame unit direction along the sensed obstacle's edge, keeping it on `side` (+1 right,
 /// -1 left) at about 4 cm; with nothing in range, a curve toward that side to round a corner.
 Vec2 follow_edge(const Percept& in, int side);
 
-/// Toward `point` (global, m): the potential field, or the edge while following.
-Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Vec2 point);
+/// Toward `point` (global, m): the potential field, or the edge while following (never when
+/// `crowded`, as in nav_update).
+Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Vec2 point,
+                bool crowded = false);
 
 /// Toward the nest: the potential field; once the field has trapped the robot, its breadcrumb
 /// trail (when it has one); the edge while following.

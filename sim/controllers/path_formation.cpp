@@ -465,11 +465,9 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
   }
   // R (nest_crowd): robots crowd the nest in task allocation; edge following them is no way out
   const bool in_crowd = sight.nest_distance_cm < m.nest_crowd_cm;
-  if (in_crowd) nav_reset(mem.nav);
   if (m.to_sighting) {
     const Avoidance avoid = diffusion(in.proximity, p);
-    const Vec2 f =
-        in_crowd ? field_toward(in.pose, m.sighting) : nav_toward(in, p, mem.nav, mem.rng, m.sighting);
+    const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, m.sighting, in_crowd);
     const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
     if (!m.guide) return drive(p, mem, p.v_max * v, PfState::kExploring);
     Command cmd = drive(p, mem, p.guide_speed * p.v_max * v, PfState::kExploring);
@@ -477,8 +475,8 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
     return cmd;
   }
   m.guide = false;
-  if (sight.lure == nullptr && !in_crowd &&
-      nav_update(mem.nav, p, mem.rng, sight.nest_distance_cm, in, -field_toward(in.pose, mem.nest))) {
+  if (sight.lure == nullptr && nav_update(mem.nav, p, mem.rng, sight.nest_distance_cm, in,
+                                          -field_toward(in.pose, mem.nest), in_crowd)) {
     return drive(p, mem, p.v_max * follow_edge(in, mem.nav.side), PfState::kExploring);
   }
   mem.pf.explore_blocked = mem.nav.gave_up;
