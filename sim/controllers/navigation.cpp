@@ -16,7 +16,6 @@ bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, c
     nav_reset(nav);
     return false;
   }
-  constexpr double kProgress = 5.0;        // cm that count as progress
   constexpr double kLeave = 20.0;          // cm past the start of a following that end it
   constexpr std::int64_t kEdgeLost = 100;  // ticks without a reading that end it
   const auto& dirs = proximity_directions();
@@ -28,7 +27,7 @@ bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, c
     touching = true;
     if (wanted_len > 0.0 && dot(dirs[k], wanted) >= 0.5 * wanted_len) way_free = false;
   }
-  if (progress_cm > nav.best + kProgress) {
+  if (progress_cm > nav.best + p.trap_progress) {
     nav.best = progress_cm;
     nav.stalled = 0;
   } else {
