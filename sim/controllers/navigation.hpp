@@ -3,11 +3,11 @@
 // fields (toward the nest, away from it while exploring), and a field has local minima in front
 // of obstacles: a robot heading for the nest stops against the near face of a box, an explorer
 // heading away from the nest stops against its far side. When a robot has made no progress (a
-// gain of trap_progress, 30 cm) for T_trap ticks it follows the obstacle's edge, Bug-style, until it has made
-// 20 cm of progress past where the following began with the way ahead clear. The side is chosen afresh at
-// each obstacle, from the robot's heading; at a dead end (no progress for 5 T_trap, or T_follow ticks gone)
-// it turns back along the same edge once (the way back may lose ground for a while, so only T_follow limits
-// it), and when that fails too it has "given up".
+// gain of trap_progress, 30 cm) for T_trap ticks it follows the obstacle's edge, Bug-style, until
+// it has made 20 cm of progress past where the following began with the way ahead clear. The side
+// is chosen afresh at each obstacle, from the robot's heading; at a dead end (no progress for 5
+// T_trap, or T_follow ticks gone) it turns back along the same edge once (the way back may lose
+// ground for a while, so only T_follow limits it), and when that fails too it has "given up".
 #pragma once
 
 #include <cstdint>
