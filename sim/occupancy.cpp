@@ -5,10 +5,22 @@
 
 namespace swarmpath::sim {
 
-Occupancy::Occupancy(Aabb arena, double cell_m, std::optional<Led> only)
-    : arena_(arena), cell_(cell_m), frame_(arena, cell_m), only_(only), counts_(frame_.cells(), 0) {
+namespace {
+
+// checked before the cell frame divides by it
+double positive_cell(double cell_m) {
   if (!(cell_m > 0.0)) throw std::invalid_argument("occupancy cell size must be > 0");
+  return cell_m;
 }
+
+}  // namespace
+
+Occupancy::Occupancy(Aabb arena, double cell_m, std::optional<Led> only)
+    : arena_(arena),
+      cell_(positive_cell(cell_m)),
+      frame_(arena, cell_),
+      only_(only),
+      counts_(frame_.cells(), 0) {}
 
 void Occupancy::add(std::span<const Pose> poses, std::span<const Led> leds) {
   for (std::size_t i = 0; i < poses.size(); ++i) {

@@ -3,6 +3,7 @@
 // only robots with the wanted LED when one is given, none outside the arena.
 #include "sim/occupancy.hpp"
 
+#include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -39,6 +40,11 @@ TEST(Occupancy, CountsOnlyTheWantedLedColour) {
   occ.add(poses, leds);
   EXPECT_EQ(occ.count(0, 0), 2);
   EXPECT_EQ(occ.only(), Led::kGreen);
+}
+
+TEST(Occupancy, RejectsACellThatIsNotPositive) {
+  EXPECT_THROW(Occupancy({{0.0, 0.0}, {1.0, 1.0}}, 0.0), std::invalid_argument);
+  EXPECT_THROW(Occupancy({{0.0, 0.0}, {1.0, 1.0}}, -0.5), std::invalid_argument);
 }
 
 }  // namespace
