@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "occupancy.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace swarmpath::sim {
@@ -30,9 +31,17 @@ void Occupancy::add(std::span<const Pose> poses, std::span<const Led> leds) {
   ++ticks_;
 }
 
+Aabb Occupancy::cell_bounds(int ix, int iy) const {
+  Aabb b = frame_.cell_bounds(iy * frame_.nx + ix);
+  b.hi = {std::min(b.hi.x, arena_.hi.x), std::min(b.hi.y, arena_.hi.y)};
+  return b;
+}
+
 double Occupancy::density(int ix, int iy) const {
   if (ticks_ == 0) return 0.0;
-  return static_cast<double>(count(ix, iy)) / static_cast<double>(ticks_) / (cell_ * cell_);
+  const Aabb b = cell_bounds(ix, iy);
+  const double area = (b.hi.x - b.lo.x) * (b.hi.y - b.lo.y);
+  return static_cast<double>(count(ix, iy)) / static_cast<double>(ticks_) / area;
 }
 
 }  // namespace swarmpath::sim

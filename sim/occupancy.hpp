@@ -39,10 +39,11 @@ class Occupancy {
   /// Robot-ticks booked in cell (ix, iy); iy = 0 is the arena's southern row.
   std::int64_t count(int ix, int iy) const { return counts_[static_cast<std::size_t>(iy * frame_.nx + ix)]; }
 
-  /// Cell (ix, iy)'s rectangle.
-  Aabb cell_bounds(int ix, int iy) const { return frame_.cell_bounds(iy * frame_.nx + ix); }
+  /// Cell (ix, iy)'s rectangle, cut at the arena's edge (the last row and column may be narrower).
+  Aabb cell_bounds(int ix, int iy) const;
 
-  /// Mean robots per square metre in cell (ix, iy) over the booked ticks (0 before any).
+  /// Mean robots per square metre of cell (ix, iy)'s part of the arena over the booked ticks (0
+  /// before any).
   double density(int ix, int iy) const;
 
  private:

@@ -42,6 +42,22 @@ TEST(Occupancy, CountsOnlyTheWantedLedColour) {
   EXPECT_EQ(occ.only(), Led::kGreen);
 }
 
+// a 1 m arena in 40 cm cells: the last column and row are 20 cm wide, and a robot there stands on
+// half a cell's floor
+TEST(Occupancy, ACellCutByTheArenaEdgeCountsDensityOverItsOwnFloor) {
+  Occupancy occ({{0.0, 0.0}, {1.0, 1.0}}, 0.4);
+  ASSERT_EQ(occ.cells_x(), 3);
+  const Aabb edge = occ.cell_bounds(2, 0);
+  EXPECT_DOUBLE_EQ(edge.hi.x, 1.0);
+  EXPECT_DOUBLE_EQ(edge.hi.y, 0.4);
+  const std::vector<Pose> poses = {at(0.9, 0.1), at(0.1, 0.1)};
+  const std::vector<Led> leds(poses.size(), Led::kGreen);
+  occ.add(poses, leds);
+  EXPECT_DOUBLE_EQ(occ.density(0, 0), 1.0 / 0.16);
+  EXPECT_DOUBLE_EQ(occ.density(2, 0), 1.0 / 0.08);  // 0.2 m x 0.4 m
+  EXPECT_DOUBLE_EQ(occ.cell_bounds(2, 2).hi.y, 1.0);
+}
+
 TEST(Occupancy, RejectsACellThatIsNotPositive) {
   EXPECT_THROW(Occupancy({{0.0, 0.0}, {1.0, 1.0}}, 0.0), std::invalid_argument);
   EXPECT_THROW(Occupancy({{0.0, 0.0}, {1.0, 1.0}}, -0.5), std::invalid_argument);
