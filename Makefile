@@ -41,6 +41,7 @@ asan:
 bench: build
 	./build/release/bench/sim_bench --benchmark_repetitions=9 --benchmark_enable_random_interleaving=true \
 		--benchmark_report_aggregates_only=true
+	./build/release/bench/growth 15
 
 format:
 	clang-format -i $(SOURCES)
