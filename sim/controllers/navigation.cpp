@@ -87,6 +87,7 @@ Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trai
   const double trap = trap_ticks > 0.0 ? trap_ticks : p.t_trap;
   // trapped by the field with a trail to retrace: switch to the trail for the rest of the way
   // (checked one tick ahead of nav_update, which would start edge following at T_trap)
+  if (!nav.on_trail) trail.touch(in.pose.p);
   if (!nav.on_trail && nav.following == 0 && !trail.empty() && p.t_trap > 0 &&
       static_cast<double>(nav.stalled) + 1.0 >= trap) {
     nav.on_trail = true;
@@ -95,6 +96,16 @@ Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trai
     nav.best = -1e18;
   }
   if (!nav.on_trail) return nav_toward(in, p, nav, rng, field_point != nullptr ? *field_point : nest);
+  // stuck on the way to the crumb nearest it (behind a wall?), away from the nest's crowd: back to
+  // a crumb it has been at, and home along the trail from there (once per leg)
+  if (!nav.fell_back && nav.following == 0 && p.t_trap > 0 &&
+      static_cast<double>(nav.stalled) + 1.0 >= trap && 100.0 * dist(in.pose.p, nest) > p.nest_crowd) {
+    nav.fell_back = true;
+    if (trail.fall_back()) {
+      nav.stalled = 0;
+      nav.best = -1e18;
+    }
+  }
   Vec2 crumb = nest;
   const bool more = trail.next_home(in.pose.p, crumb);
   // progress along the trail: minus what is left of it (then of the last leg to the nest)

@@ -28,6 +28,7 @@ struct NavMemory {
   std::int64_t off_edge = 0;   ///< ticks of the current following without any proximity reading
   bool gave_up = false;        ///< a following ran out without progress
   bool on_trail = false;       ///< going home along the breadcrumbs
+  bool fell_back = false;      ///< ... from a crumb it has been at, the nearest one having trapped it
   bool reversed = false;       ///< the current following has already turned back once
 };
 

@@ -202,6 +202,10 @@ bool found_goal_or_subgoal(const PfContext& c) {  // row 1, label c
   return goal_in_reach(c) || c.sight.red_near != nullptr;
 }
 
+// [R return_finds]: a robot going home still finds the goal it passes (not a subgoal: robots go
+// home past the chain, and each would start a side branch)
+bool found_on_the_way_home(const PfContext& c) { return c.p.return_finds && !c.m.scout && goal_in_reach(c); }
+
 bool exploration_time_over(const PfContext& c) {  // row 2, label b (or blocked for good)
   // travelling back to a sighting does not spend the budget (capped at three budgets)
   const double spent = static_cast<double>(c.m.t_state - c.m.travel_ticks);
@@ -358,9 +362,10 @@ void leave_chain(const PfContext&, PfMemory& m) {
 // clang-format off
 // SPEC §2.3, in its order (paper Table 2 labels where they exist). For each state the first row
 // whose guard holds fires; rows 6, 8, 9 and 13 are split where the SPEC lists two conditions.
-const std::array<PfTransition, 23> kTable{{
+const std::array<PfTransition, 24> kTable{{
   {PfState::kExploring,      found_goal_or_subgoal,        PfState::kSubgoalForming, take_target,           "#1",  "c"},
   {PfState::kExploring,      exploration_time_over,        PfState::kReturnToNest,   nullptr,               "#2",  "b"},
+  {PfState::kReturnToNest,   found_on_the_way_home,        PfState::kSubgoalForming, take_target,           "#1h", "c"},
   {PfState::kReturnToNest,   reached_nest,                 PfState::kResting,        nullptr,               "#3",  "d"},
   {PfState::kResting,        resting_time_over,            PfState::kExploring,      grow_budget,           "#4",  "i"},
   {PfState::kSubgoalForming, found_subgoal_nearer_nest,    PfState::kSubgoalForming, retarget,              "#5r", "c"},

@@ -69,7 +69,8 @@ bool is_path_robot_colour(const Blob& b) {  // SPEC §2.6 T7
 // ---- guards ----
 
 bool found_the_goal(const TaContext& c) {  // T2, TA c: the goal within d_detect, no ALLOC_DONE heard
-  return c.sight.goal_found && !c.sight.alloc_done_heard;
+  // a scout going home finds it too [R return_finds]
+  return (c.sight.exploring || c.p.return_finds) && c.sight.goal_found && !c.sight.alloc_done_heard;
 }
 
 bool allocation_over(const TaContext& c) {  // T7, TA d: late arrivals
@@ -272,6 +273,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
   TaMemory& m = mem.ta;
   TaSight sight;
   ta_perceive(in, p, mem.nest, m.protocol.acks > 0, sight);
+  sight.exploring = mem.pf.state == PfState::kExploring;
   const TaContext c{in, p, m, sight, swarm};
   if (ta_transition(c, mem) != nullptr) nav_reset(mem.nav);
   ++m.t_state;

@@ -59,6 +59,7 @@ struct TaMemory {
 /// What the robot hears and sees that the TA rows need.
 struct TaSight {
   bool goal_found = false;          ///< goal beacon within d_detect
+  bool exploring = true;            ///< a scout on its way out (not going home or resting)
   bool founder_or_dm_seen = false;  ///< a CYAN or GRAY80 robot within R_vis
   bool path_colour_seen = false;    ///< a robot in a path-formation state (SPEC T7)
   bool request_heard = false;

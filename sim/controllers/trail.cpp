@@ -1,36 +1,81 @@
 // SPDX-License-Identifier: MIT
 #include "trail.hpp"
 
+#include <algorithm>
+
 namespace swarmpath::sim {
+
+namespace {
+constexpr double kSpacing = 0.25;  // [m] between crumbs
+constexpr double kNear = 0.25;     // [m] under a 30 cm wall plus two robot radii (47 cm)
+
+double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return dist(p, a + t * ab);
+}
+}  // namespace
 
 void Trail::reset(Vec2 start) {
   count_ = 1;
+  reached_ = 0;
   crumbs_[0] = start;
-  spacing_ = 0.25;
 }
 
 void Trail::record(Vec2 p) {
-  if (count_ > 0 && dist(p, crumbs_[static_cast<std::size_t>(count_ - 1)]) < spacing_) return;
+  if (count_ > 0 && dist(p, crumbs_[static_cast<std::size_t>(count_ - 1)]) < kSpacing) return;
   // loop erasure: back near an earlier crumb, the way since then was a detour
   for (int i = 0; i + 2 < count_; ++i) {
-    if (dist(p, crumbs_[static_cast<std::size_t>(i)]) < spacing_) {
+    if (dist(p, crumbs_[static_cast<std::size_t>(i)]) < kNear) {
       count_ = i + 1;
+      reached_ = i;
       return;
     }
   }
-  if (count_ == kCapacity) {
-    // keep crumbs 0, 2, 4, ...: the trail still starts where it started
-    for (int i = 0; i < kCapacity / 2; ++i)
-      crumbs_[static_cast<std::size_t>(i)] = crumbs_[static_cast<std::size_t>(2 * i)];
-    count_ = kCapacity / 2;
-    spacing_ *= 2.0;
-  }
+  if (count_ == kCapacity) thin();
+  reached_ = count_;
   crumbs_[static_cast<std::size_t>(count_++)] = p;
+}
+
+// Halves the crumbs, dropping one at a time the crumb that lies nearest the straight line between
+// its neighbours (ties: the earlier one): the corners where the way turned round an obstacle stay,
+// so that no leg of the thinned trail cuts through it; the straight stretches thin out. The first
+// and last crumbs stay.
+void Trail::thin() {
+  while (count_ > kCapacity / 2) {
+    int drop = 1;
+    double least = 1e18;
+    for (int i = 1; i + 1 < count_; ++i) {
+      const double d =
+          distance_to_segment(crumbs_[static_cast<std::size_t>(i)], crumbs_[static_cast<std::size_t>(i - 1)],
+                              crumbs_[static_cast<std::size_t>(i + 1)]);
+      if (d < least) {
+        least = d;
+        drop = i;
+      }
+    }
+    for (int i = drop; i + 1 < count_; ++i)
+      crumbs_[static_cast<std::size_t>(i)] = crumbs_[static_cast<std::size_t>(i + 1)];
+    --count_;
+  }
+}
+
+void Trail::touch(Vec2 p) {
+  for (int i = 0; i < reached_; ++i) {
+    if (dist(p, crumbs_[static_cast<std::size_t>(i)]) < kNear) {
+      reached_ = i;
+      return;
+    }
+  }
 }
 
 double Trail::remaining(Vec2 p) const {
   if (count_ == 0) return 0.0;
-  return dist(p, crumbs_[static_cast<std::size_t>(count_ - 1)]) + static_cast<double>(count_ - 1) * spacing_;
+  double len = dist(p, crumbs_[static_cast<std::size_t>(count_ - 1)]);
+  for (int i = 1; i < count_; ++i)
+    len += dist(crumbs_[static_cast<std::size_t>(i - 1)], crumbs_[static_cast<std::size_t>(i)]);
+  return len;
 }
 
 void Trail::start_home(Vec2 p) {
@@ -43,7 +88,15 @@ void Trail::start_home(Vec2 p) {
       best = i;
     }
   }
-  count_ = best + 1;
+  count_ = best + 1;  // the crumbs after it stay in the array for fall_back
+  home_from_ = count_;
+}
+
+bool Trail::fall_back() {
+  // once past a crumb of the way home, the trail is not what trapped it
+  if (count_ == 0 || count_ < home_from_ || reached_ + 1 <= count_) return false;
+  count_ = reached_ + 1;
+  return true;
 }
 
 bool Trail::next_home(Vec2 p, Vec2& crumb) {

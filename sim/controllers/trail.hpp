@@ -18,29 +18,44 @@ class Trail {
   /// Starts a new trail at `start`.
   void reset(Vec2 start);
 
-  /// Drops a crumb when the robot is `spacing` from the last one; back within `spacing` of an
-  /// earlier crumb, it cuts the trail back to it (loop erasure); a full trail keeps every other
-  /// crumb and doubles its spacing (deterministic thinning).
+  /// Drops a crumb when the robot is 25 cm from the last one; back within 25 cm of an
+  /// earlier crumb, it cuts the trail back to it (loop erasure: closer than a wall's thickness
+  /// plus a robot's width, so the cut never joins two sides of a wall); a full trail drops half its
+  /// crumbs, those nearest the line between their neighbours: the straight stretches thin out and
+  /// the corners where the robot went round an obstacle stay.
   void record(Vec2 p);
 
-  /// Begins the way home from `p`: drops every crumb after the one nearest `p` (the robot may be
-  /// anywhere along the trail, or beside it).
+  /// On the way home before taking the trail: a crumb the robot passes within 25 cm of is one it
+  /// has reached; the trail home may start there.
+  void touch(Vec2 p);
+
+  /// Begins the way home from `p` at the crumb nearest it (the robot may be anywhere along the
+  /// trail, or beside it).
   void start_home(Vec2 p);
+
+  /// The crumb nearest the robot may lie behind a wall from it: goes back to the crumb nearest home
+  /// that the robot has been at (the trail's end, or one it touched since the trail's last crumb)
+  /// and home from there. False when that is no farther from home than where it is going now, or
+  /// once the robot has passed a crumb of the way home (the way was passable).
+  bool fall_back();
 
   /// The next crumb homeward from `p`; crumbs within 15 cm are consumed. False when none is left.
   bool next_home(Vec2 p, Vec2& crumb);
 
   bool empty() const { return count_ == 0; }
 
-  /// Length of the way home from `p` along the remaining crumbs (approximately) [m].
+  /// Length of the way home from `p` along the remaining crumbs [m].
   double remaining(Vec2 p) const;
 
   int size() const { return count_; }
 
  private:
+  void thin();
+
   std::array<Vec2, kCapacity> crumbs_{};
   int count_ = 0;
-  double spacing_ = 0.25;  // [m]
+  int reached_ = 0;    // the crumb nearest home that the robot has been at since the last record
+  int home_from_ = 0;  // count_ when start_home chose the first crumb
 };
 
 }  // namespace swarmpath::sim

@@ -156,6 +156,7 @@ TEST(Determinism, GoldenHashPathFormationShortChain) {
   // update only with a reason, stated in the commit that changes it
   // stop 21: trail_slack 45 cm (was: anywhere on the trail), 1275 -> 1303 ticks
   // stop 22: trap_progress 30 cm (was 5), 1303 -> 2323 ticks
+  // stop 24: trails that never join two sides of a wall, return_finds (the goal): unchanged
   constexpr std::uint64_t kExpected = 0xd62f89a8a51ece8bULL;  // a complete run: 2323 ticks
   const Metrics m = evaluate(Params{}, short_chain(), Mode::kPathFormation, 1);
   EXPECT_EQ(m.state_hash, kExpected) << "actual state_hash 0x" << to_hex(m.state_hash) << " (ticks "

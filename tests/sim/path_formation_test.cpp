@@ -187,6 +187,25 @@ TEST(PfTable, Row2ExplorationBudgetSpent) {  // label b
   EXPECT_EQ(m.state, PfState::kReturnToNest);
 }
 
+// R return_finds: a robot going home that passes within d_detect of the goal takes it (env8: the
+// first robots there arrive with their budget spent); a RED subgoal it passes it leaves alone
+TEST(PfTable, Row1hARobotGoingHomeStillFindsTheGoal) {
+  PfMemory m = in_state(PfState::kReturnToNest);
+  Reading goal;
+  goal.add(Led::kYellow, kGoalEmitter, 10, 25);
+  Params off;
+  off.return_finds = false;
+  EXPECT_EQ(fire(m, goal, off), "");
+  EXPECT_EQ(m.state, PfState::kReturnToNest);
+  Reading red;
+  red.add(Led::kRed, 7, -20, 20);
+  EXPECT_EQ(fire(m, red), "");
+  EXPECT_EQ(m.state, PfState::kReturnToNest);
+  EXPECT_EQ(fire(m, goal), "#1h");
+  EXPECT_EQ(m.state, PfState::kSubgoalForming);
+  EXPECT_EQ(m.target.id, kGoalEmitter);
+}
+
 TEST(PfTable, Row3ReachedTheNest) {  // label d
   PfMemory m = in_state(PfState::kReturnToNest);
   Reading r;

@@ -1,0 +1,117 @@
+// SPDX-License-Identifier: MIT
+// The breadcrumb trail [R] must never join the two sides of a wall: a robot retracing it is told
+// to walk through the wall, presses against it and wanders (env8, the founder going home from the
+// goal, stop 23). The thinnest wall in the paper's arenas is 30 cm, so two robot centres on its
+// two faces are at least 47 cm apart.
+#include "sim/controllers/trail.hpp"
+
+#include <gtest/gtest.h>
+
+namespace swarmpath::sim {
+namespace {
+
+// walks the trail from `from` to `to` in 1 cm steps
+void walk(Trail& t, Vec2 from, Vec2 to) {
+  const double len = dist(from, to);
+  const int steps = static_cast<int>(len / 0.01);
+  for (int k = 1; k <= steps; ++k) t.record(from + (static_cast<double>(k) / steps) * (to - from));
+}
+
+// the first crumb on the way home from `p`
+Vec2 first_crumb(Trail& t, Vec2 p) {
+  Vec2 c{};
+  EXPECT_TRUE(t.next_home(p, c));
+  return c;
+}
+
+// whether the way home from `p` ever steps from one side of the wall to the other below its end
+bool crosses_the_wall(Trail t, Vec2 p) {
+  Vec2 c{};
+  while (t.next_home(p, c)) {
+    if ((c.x > 0.0) != (p.x > 0.0)) {
+      const double y_at_wall = p.y + (c.y - p.y) * (0.0 - p.x) / (c.x - p.x);
+      if (y_at_wall < 3.0) return true;
+    }
+    p = c;
+  }
+  return false;
+}
+
+// a wall 30 cm thick along x = 0 from y = -1 up to y = 3: the robot goes up its west face
+// (x = -0.235), round its end and down its east face (x = +0.235)
+void round_the_wall(Trail& t) {
+  walk(t, {-0.235, -1.0}, {-0.235, 3.3});
+  walk(t, {-0.235, 3.3}, {0.235, 3.3});
+  walk(t, {0.235, 3.3}, {0.235, -1.0});
+}
+
+TEST(Trail, LoopErasureNeverCutsAcrossAWall) {
+  Trail t;
+  // 90 m of zigzag first (rows 1.5 m apart), so that the trail has thinned its crumbs to 1 m
+  // spacing (under the old rule the loop erasure radius grew with the spacing, and the 47 cm
+  // across the wall then counted as "back near a crumb")
+  Vec2 at{-12.0, -2.0};
+  t.reset(at);
+  for (int row = 0; row < 14; ++row) {
+    const Vec2 end{row % 2 == 0 ? -7.0 : -12.0, at.y};
+    walk(t, at, end);
+    at = row < 13 ? Vec2{end.x, end.y - 1.5} : end;
+    walk(t, end, at);
+  }
+  walk(t, at, {at.x, -24.0});
+  walk(t, {at.x, -24.0}, {-0.235, -24.0});
+  walk(t, {-0.235, -24.0}, {-0.235, -1.0});
+  const double before = t.remaining({-0.235, -1.0});
+  round_the_wall(t);
+  // the way round is 9.07 m long (a cut across the wall: under a metre)
+  EXPECT_GT(t.remaining({0.235, -1.0}), before + 8.5) << "the way round the wall was cut";
+  t.start_home({0.235, -1.0});
+  EXPECT_FALSE(crosses_the_wall(t, {0.235, -1.0}));
+}
+
+TEST(Trail, LoopErasureStillCutsARealLoop) {
+  Trail t;
+  t.reset({0.0, 0.0});
+  walk(t, {0.0, 0.0}, {2.0, 0.0});
+  const int straight = t.size();
+  walk(t, {2.0, 0.0}, {2.0, 1.0});
+  walk(t, {2.0, 1.0}, {3.0, 1.0});
+  walk(t, {3.0, 1.0}, {3.0, 0.0});
+  walk(t, {3.0, 0.0}, {1.9, 0.0});  // back at the loop's start: the loop is a detour
+  EXPECT_LE(t.size(), straight);
+}
+
+TEST(Trail, ARobotSentAcrossAWallFallsBackToACrumbItHasBeenAt) {
+  // up the west face of the wall, round its end, then away from it and down, 2 m east of it
+  const auto lay = [](Trail& t) {
+    t.reset({-0.235, -1.0});
+    walk(t, {-0.235, -1.0}, {-0.235, 3.3});
+    walk(t, {-0.235, 3.3}, {2.0, 3.3});
+    walk(t, {2.0, 3.3}, {2.0, -1.0});
+  };
+  // going home by the field from the trail's end (2, -1): west, into the wall's east face, where
+  // the nearest crumbs are across the wall (47 cm) and its own side has none within 2 m
+  Trail t;
+  lay(t);
+  const Vec2 stuck{0.235, -1.0};
+  for (double x = 2.0; x >= stuck.x; x -= 0.01) t.touch({x, -1.0});
+  t.start_home(stuck);
+  EXPECT_LT(first_crumb(t, stuck).x, 0.0);  // the nearest crumb: across the wall
+  ASSERT_TRUE(t.fall_back());
+  const Vec2 c = first_crumb(t, stuck);
+  EXPECT_GT(c.x, 1.9) << "still sent across the wall, to (" << c.x << ", " << c.y << ")";
+  EXPECT_FALSE(crosses_the_wall(t, stuck));
+  // a robot that walked up along the trail's last leg touched its crumbs; the nearest crumb is one
+  // of them, and there is nothing to fall back to
+  Trail u;
+  lay(u);
+  for (double y = -1.0; y <= 2.0; y += 0.01) u.touch({2.0, y});
+  u.start_home({2.0, 2.0});
+  EXPECT_FALSE(u.fall_back());
+  const Vec2 d = first_crumb(u, {2.0, 2.0});
+  EXPECT_GT(d.x, 1.9);
+  EXPECT_GT(d.y, 1.9);
+}
+
+}  // namespace
+}  // namespace swarmpath::sim
