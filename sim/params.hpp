@@ -104,8 +104,9 @@ struct Params {
   bool founder_seniority = true;  ///< TA T8: a founder that has ACKed robots outranks one that has not [R]
   double nest_wait = 0.5;         ///< TA: decision makers and robots waiting to leave stop this fraction of
                                   ///< R_nest_reach from the nest [R]
-  bool return_finds = true;   ///< a robot going back to the nest (budget spent) that finds the goal within
-                              ///< d_detect takes it as an explorer would (SPEC rule #1, TA T2) [R]
+  bool return_finds = true;  ///< a robot going back to the nest (budget spent) that finds the goal within
+                             ///< d_detect takes it as an explorer would (SPEC rule #1, TA T2) [R]
+  bool skip_blocked_crumbs = true;  ///< a robot going home passes over a crumb it cannot reach in T_trap [R]
   double founder_wait = 0.9;  ///< TA: the founder runs the protocol this fraction of R_nest_reach from the
                               ///< nest, at the crowd's rim [R]
 };

@@ -106,6 +106,14 @@ Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trai
       nav.best = -1e18;
     }
   }
+  // a crumb it cannot get to (a robot stands on it: chain robots stop where explorers walked) is
+  // passed over after T_trap ticks without progress
+  if (p.skip_blocked_crumbs && nav.following == 0 && p.t_trap > 0 && !trail.empty() &&
+      static_cast<double>(nav.stalled) + 1.0 >= trap) {
+    trail.skip();
+    nav.stalled = 0;
+    nav.best = -1e18;
+  }
   Vec2 crumb = nest;
   const bool more = trail.next_home(in.pose.p, crumb);
   // progress along the trail: minus what is left of it (then of the last leg to the nest)

@@ -42,6 +42,11 @@ class Trail {
   /// The next crumb homeward from `p`; crumbs within 15 cm are consumed. False when none is left.
   bool next_home(Vec2 p, Vec2& crumb);
 
+  /// Drops the next crumb homeward (one the robot cannot reach).
+  void skip() {
+    if (count_ > 0) --count_;
+  }
+
   bool empty() const { return count_ == 0; }
 
   /// Length of the way home from `p` along the remaining crumbs [m].

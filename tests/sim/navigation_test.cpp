@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "sim/controllers/trail.hpp"
+
 namespace swarmpath::sim {
 namespace {
 
@@ -46,6 +48,39 @@ TEST(Navigator, WithTheOldFiveCmThresholdACreepingQueueNeverFollowsTheEdge) {
   p.trap_progress = 5;  // before stop 22
   EXPECT_EQ(ticks_until_following(p, 0.25, 1000), -1);
   EXPECT_EQ(ticks_until_following(p, 0.0, 1000), static_cast<int>(p.t_trap) + 1);
+}
+
+// A robot going home along its breadcrumbs, 25 cm from the next crumb, with a robot standing on that
+// crumb (chain robots stop where explorers walked): env8, TA, seed 2 at stop 24 had five allocated
+// robots circling such crumbs in RETURN_TO_NEST for 17 000-25 000 ticks, while the chain's tip
+// waited one link short of the nest. Returns the crumbs left after `ticks` ticks of not moving.
+int crumbs_left_when_blocked(const Params& p, int ticks) {
+  Trail trail;
+  trail.reset({0.0, 0.0});
+  for (int k = 1; k <= 12; ++k) trail.record({0.25 * k, 0.0});  // out to (3, 0)
+  Percept in;
+  in.pose = Pose{{2.0, 0.0}, -1.0, 0.0};  // facing home, the blocked crumb at (1.75, 0) ahead
+  in.proximity[0] = 0.6;                  // the robot standing on it
+  NavMemory nav;
+  nav.on_trail = true;
+  nav.fell_back = true;  // its one fall-back already spent
+  trail.start_home(in.pose.p);
+  Rng rng(1);
+  for (int t = 0; t < ticks; ++t) nav_home(in, p, nav, rng, trail, {0.0, 0.0}, 0.0, nullptr);
+  return trail.size();
+}
+
+TEST(Navigator, ARobotGoingHomePassesOverACrumbItCannotReach) {
+  Params p;
+  ASSERT_TRUE(p.skip_blocked_crumbs);
+  const int t_trap = static_cast<int>(p.t_trap);
+  const int at_start = crumbs_left_when_blocked(p, 1);
+  EXPECT_EQ(at_start, 8);  // crumbs at 0 ... 1.75 m (the one at 2 m consumed: within 15 cm)
+  EXPECT_EQ(crumbs_left_when_blocked(p, t_trap - 2), at_start);
+  EXPECT_EQ(crumbs_left_when_blocked(p, t_trap + t_trap / 2), at_start - 1);
+  Params off = p;
+  off.skip_blocked_crumbs = false;  // before stop 24: edge following, the crumb still ahead
+  EXPECT_EQ(crumbs_left_when_blocked(off, 5 * t_trap), at_start);
 }
 
 }  // namespace
