@@ -236,9 +236,11 @@ TaMessage alloc_done_flag(std::uint8_t id, TaState s) {
 
 std::span<const TaTransition> ta_transitions() { return kTable; }
 
-void ta_perceive(const Percept& in, const Params& p, Vec2 nest, bool allocating, TaSight& sight) {
+void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaSight& sight) {
   sight = TaSight{};
-  sight.nest_distance_cm = 100.0 * dist(in.pose.p, nest);
+  sight.exploring = mem.pf.state == PfState::kExploring;
+  sight.nest_distance_cm = 100.0 * dist(in.pose.p, mem.nest);
+  const bool allocating = mem.ta.protocol.acks > 0;
   for (const Blob& b : in.blobs) {
     if (b.emitter == kGoalEmitter && b.distance_cm <= p.d_detect) sight.goal_found = true;
     if (b.emitter >= 0 && (b.color == Led::kCyan || b.color == Led::kGray80)) sight.founder_or_dm_seen = true;
@@ -272,8 +274,7 @@ const TaTransition* ta_transition(const TaContext& c, RobotMemory& mem) {
 Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& mem, int swarm) {
   TaMemory& m = mem.ta;
   TaSight sight;
-  ta_perceive(in, p, mem.nest, m.protocol.acks > 0, sight);
-  sight.exploring = mem.pf.state == PfState::kExploring;
+  ta_perceive(in, p, mem, sight);
   const TaContext c{in, p, m, sight, swarm};
   if (ta_transition(c, mem) != nullptr) nav_reset(mem.nav);
   ++m.t_state;

@@ -91,8 +91,9 @@ struct TaTransition {
 
 std::span<const TaTransition> ta_transitions();
 
-/// Reads the camera and the RAB inbox into `sight`.
-void ta_perceive(const Percept& in, const Params& p, Vec2 nest, bool allocating, TaSight& sight);
+/// Reads the camera and the RAB inbox, and the robot's own state (its nest, its trip, whether it
+/// has ACKed robots), into `sight`.
+void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaSight& sight);
 
 /// Applies the first matching row (if any); returns it or nullptr.
 const TaTransition* ta_transition(const TaContext& c, RobotMemory& mem);

@@ -62,8 +62,7 @@ RobotMemory robot(TaState s, std::uint8_t env_class = 0) {
 std::string fire(RobotMemory& mem, const Reading& r, const Params& p = {}, int swarm = 100) {
   const Percept in = r.percept();
   TaSight sight;
-  ta_perceive(in, p, kNest, false, sight);
-  sight.exploring = mem.pf.state == PfState::kExploring;
+  ta_perceive(in, p, mem, sight);
   const TaContext c{in, p, mem.ta, sight, swarm};
   const TaTransition* row = ta_transition(c, mem);
   return row ? std::string(row->row) : std::string();
