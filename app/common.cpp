@@ -65,6 +65,7 @@ void add_path_json(nlohmann::ordered_json& j, const sim::Metrics& m) {
     j["allocated"] = m.allocated;
     j["resource_reduction_pct"] = tu_or_null(m.resource_reduction_pct);
     j["ticks_to_allocate"] = tick_or_null(m.ticks_to_allocate);
+    j["recruited"] = m.recruited;  // rest_recruit: resting robots that closed the chain (in `allocated`)
   }
 }
 

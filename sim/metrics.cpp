@@ -2,6 +2,7 @@
 #include "metrics.hpp"
 
 #include "astar.hpp"
+#include "controllers/task_allocation.hpp"
 
 namespace swarmpath::sim {
 
@@ -9,6 +10,8 @@ void MetricsAccumulator::begin(int robots) {
   robots_ = robots;
   ever_allocated_.assign(static_cast<std::size_t>(robots), 0);
   ever_allocated_count_ = 0;
+  recruited_ = 0;
+  recruit_row_ = ta_row_number("T10");
   distance_m_ = 0;
   path_ = PathObserver{};
   chain_ = ChainStatsObserver{};
@@ -26,6 +29,7 @@ void MetricsAccumulator::observe(const Scenario& s, const World& w) {
     if (ever_allocated_[i] == 0 && w.memory[i].ta.state == TaState::kPathFormation) {
       ever_allocated_[i] = 1;
       ++ever_allocated_count_;
+      if (w.memory[i].ta.last_row == recruit_row_) ++recruited_;
     }
   }
   if (alloc_tick_ >= 0) return;
@@ -57,6 +61,7 @@ Metrics MetricsAccumulator::finish(std::int64_t ticks, double dt, std::uint64_t 
   // a path can complete before any founder broadcasts DONE: the robots that initiated the task count
   m.allocated = alloc_tick_ >= 0 || ever_allocated_count_ > 0 ? ever_allocated_count_ : -1;
   m.ticks_to_allocate = alloc_tick_;
+  m.recruited = recruited_;
   if (m.allocated >= 0) m.resource_reduction_pct = 100.0 * (robots_ - m.allocated) / robots_;
   if (m.subgoal_path.tick >= 0) m.subgoal_path_length_tu = to_tu(m.subgoal_path.length_m);
   if (m.opt1_path.tick >= 0) m.opt1_path_length_tu = to_tu(m.opt1_path.length_m);

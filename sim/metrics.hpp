@@ -31,6 +31,7 @@ struct Metrics {
 
   // task allocation (SPEC §4.1, §4.3)
   int allocated = -1;  ///< robots that entered INITIATE_TASK (all founders' allocations, founders included)
+  int recruited = 0;   ///< of them, resting robots that joined a chain's end (rest_recruit, TA row T10)
   double resource_reduction_pct = std::numeric_limits<double>::quiet_NaN();  ///< (N - allocated)/N x 100
   std::int64_t ticks_to_allocate = -1;               ///< T_alloc: DONE first broadcast
   PathSnapshot subgoal_path, opt1_path, final_path;  ///< for pictures
@@ -62,6 +63,8 @@ class MetricsAccumulator {
   std::int64_t alloc_tick_ = -1;
   std::vector<std::uint8_t> ever_allocated_;  ///< per robot: has entered INITIATE_TASK
   int ever_allocated_count_ = 0;
+  int recruited_ = 0;             ///< allocated robots whose first allocation was row T10 (rest_recruit)
+  std::uint8_t recruit_row_ = 0;  ///< ta_row_number("T10")
 };
 
 }  // namespace swarmpath::sim

@@ -109,6 +109,10 @@ struct Params {
   bool skip_blocked_crumbs = true;  ///< a robot going home passes over a crumb it cannot reach in T_trap [R]
   double founder_wait = 0.9;  ///< TA: the founder runs the protocol this fraction of R_nest_reach from the
                               ///< nest, at the crowd's rim [R]
+  bool rest_recruit = true;   ///< TA: a resting robot at its deployment point that sees a chain's end (a free
+                              ///< RED subgoal) for T_recruit ticks joins it as the next link [R]
+  double t_recruit = 300;     ///< TA, rest_recruit: ticks the free subgoal stays in view first (plus up to as
+                              ///< many again, drawn per robot, so that one robot goes) [ticks]
 };
 
 enum class ParamType : std::uint8_t { kReal, kInteger, kBool, kChoice };

@@ -779,6 +779,34 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
       (m.state == PfState::kReturnToNest && sight.nest_distance_cm <= p.r_nest_reach) ? m.nest_ticks + 1 : 0;
 }
 
+const Blob* free_subgoal_in_view(const Percept& in) {
+  const Claims claims = gather_claims(in);
+  const Blob* best = nullptr;
+  for (const Blob& b : in.blobs) {
+    if (b.emitter < 0 || b.color != Led::kRed || claims.has(b.emitter)) continue;
+    if (best == nullptr || b.distance_cm < best->distance_cm) best = &b;
+  }
+  return best;
+}
+
+void pf_join_chain_end(PfMemory& m, const Params& p, const Blob& red, const Pose& pose, Vec2 nest,
+                       std::int64_t tick) {
+  m.state = PfState::kSubgoalForming;
+  m.t_state = 0;
+  m.target = follow(red, pose);
+  // on the nest side of it already, the robot need not cross the resting crowd to reach it first
+  m.target_reached = red.distance_cm <= p.d_detect || dist(pose.p, nest) < dist(m.target.last_seen, nest);
+  m.far_side = false;
+  m.parent = Tracked{};
+  m.child = Tracked{};
+  m.last_saw_target = pose.p;
+  m.safe_pos = pose.p;
+  m.to_view_edge = false;
+  m.fired_tick = tick;
+  m.sighting = m.target.last_seen;  // site fidelity, should it go exploring later
+  m.has_sighting = true;
+}
+
 const PfTransition* pf_transition(const PfContext& c, PfMemory& m) {
   for (std::size_t i = 0; i < kTable.size(); ++i) {
     const PfTransition& row = kTable[i];

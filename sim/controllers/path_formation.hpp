@@ -164,6 +164,15 @@ const PfTransition* pf_transition(const PfContext& c, PfMemory& m);
 /// One control step: perceive, transition via the table, then the state's behaviour.
 Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem);
 
+/// single_child [R]: the RED subgoal in view, nearest first, that no robot in view or on the
+/// medium names as its target or parent: the end of a chain, where the next link goes.
+const Blob* free_subgoal_in_view(const Percept& in);
+
+/// rest_recruit [R]: the robot starts SUBGOAL_FORMING from `red`, a free subgoal in view; it
+/// walks to it first unless within d_detect of it or nearer the nest than it (then rows 5-8).
+void pf_join_chain_end(PfMemory& m, const Params& p, const Blob& red, const Pose& pose, Vec2 nest,
+                       std::int64_t tick);
+
 /// Sets up the memory of a robot starting to explore (T_explore = T_explore0).
 void pf_init(PfMemory& m, const Params& p);
 

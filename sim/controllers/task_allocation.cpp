@@ -98,6 +98,12 @@ bool founder_done(const TaContext& c) {  // T9, the founder not counting itself
   return c.m.protocol_started && c.m.protocol.finished(static_cast<int>(c.p.t_done));
 }
 
+// T10 [R rest_recruit]: a chain's end in view for the robot's wait: the chain ran out of robots
+// within sight of the deployment area
+bool chain_end_starved(const TaContext& c) {
+  return c.sight.chain_end != nullptr && c.m.end_seen > 0 && c.m.end_seen >= c.m.end_wait;
+}
+
 bool acked(const TaContext& c) { return c.sight.dm.decision == DmDecision::kGo; }  // T5, TA e
 
 bool told_to_rest(const TaContext& c) {  // T6, TA d
@@ -154,10 +160,16 @@ void dm_initiates(const TaContext& c, RobotMemory& mem) {
   }
 }
 
+// T10 [R rest_recruit]: path formation, forming the next link from the chain's end in view
+void join_chain_end(const TaContext& c, RobotMemory& mem) {
+  start_path_formation(c, mem, mem.pf.t_explore / 10.0);
+  pf_join_chain_end(mem.pf, c.p, *c.sight.chain_end, c.in.pose, mem.nest, c.in.tick);
+}
+
 // clang-format off
 // SPEC §2.6, in its order; T1 (explore / return / rest) runs inside the scout's path-formation
 // states, T4 (the founder at the nest runs the protocol) inside the founder's behaviour.
-const std::array<TaTransition, 9> kTable{{
+const std::array<TaTransition, 10> kTable{{
   {TaState::kScout,         found_the_goal,               TaState::kGoalFounder,   become_founder,    "T2",  "c"},
   {TaState::kScout,         allocation_over,              TaState::kRestingTask,   nullptr,           "T7",  "d"},
   {TaState::kScout,         learned_of_the_goal,          TaState::kDecisionMaker, nullptr,           "T3",  "f"},
@@ -167,6 +179,7 @@ const std::array<TaTransition, 9> kTable{{
   {TaState::kGoalFounder,   late_founder,                 TaState::kRestingTask,   nullptr,           "T7f", "d"},
   {TaState::kGoalFounder,   founder_done_and_counts_self, TaState::kPathFormation, founder_initiates, "T9",  "e"},
   {TaState::kGoalFounder,   founder_done,                 TaState::kRestingTask,   nullptr,           "T9r", "d"},
+  {TaState::kRestingTask,   chain_end_starved,            TaState::kPathFormation, join_chain_end,    "T10", ""},
 }};
 
 // clang-format on
@@ -236,6 +249,13 @@ TaMessage alloc_done_flag(std::uint8_t id, TaState s) {
 
 std::span<const TaTransition> ta_transitions() { return kTable; }
 
+std::uint8_t ta_row_number(std::string_view row) {
+  for (std::size_t i = 0; i < kTable.size(); ++i) {
+    if (kTable[i].row == row) return static_cast<std::uint8_t>(i + 1);
+  }
+  return 0;
+}
+
 void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaSight& sight) {
   sight = TaSight{};
   sight.exploring = mem.pf.state == PfState::kExploring;
@@ -254,6 +274,11 @@ void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaS
   }
   sight.senior_founder = senior_founder_heard({allocating, id}, in.rab, p.founder_seniority);
   sight.dm = decision_maker_tick(id, in.rab, p.founder_seniority);
+  // rest_recruit: only at its deployment point (robots passing by can push a resting one far off)
+  if (p.rest_recruit && mem.ta.state == TaState::kRestingTask && mem.ta.arrived &&
+      100.0 * dist(in.pose.p, mem.start) <= p.d_detect) {
+    sight.chain_end = free_subgoal_in_view(in);
+  }
 }
 
 const TaTransition* ta_transition(const TaContext& c, RobotMemory& mem) {
@@ -275,6 +300,12 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
   TaMemory& m = mem.ta;
   TaSight sight;
   ta_perceive(in, p, mem, sight);
+  if (sight.chain_end == nullptr) {
+    m.end_seen = 0;
+  } else if (m.end_seen++ == 0) {  // R rest_recruit: T_recruit plus a draw, so that one of several goes
+    const auto extra = static_cast<std::uint64_t>(std::max(0.0, std::round(p.t_recruit)));
+    m.end_wait = static_cast<std::int64_t>(extra + mem.rng.below(extra + 1));
+  }
   const TaContext c{in, p, m, sight, swarm};
   if (ta_transition(c, mem) != nullptr) nav_reset(mem.nav);
   ++m.t_state;

@@ -52,6 +52,9 @@ struct TaMemory {
   double touch_base = 0;      ///< the proximity vector's length when it settled (static neighbours) [R]
   std::int64_t give_way = 0;  ///< ticks left backing away from a robot pressing on it (give_way) [R]
   Vec2 give_dir;              ///< the way it backs away, robot frame
+  std::int64_t end_seen =
+      0;  ///< rest_recruit: consecutive ticks a chain's end (free RED) has been in view [R]
+  std::int64_t end_wait = 0;  ///< rest_recruit: ticks this robot waits before joining it (T_recruit + a draw)
   std::uint8_t last_row = 0;  ///< the TA table row that fired last (index + 1)
   std::int64_t fired_tick = -1;
 };
@@ -66,6 +69,7 @@ struct TaSight {
   bool alloc_done_heard = false;
   std::uint8_t senior_founder = kBroadcastId;  ///< a founder that outranks this one (T8)
   DmTick dm;                                   ///< the decision maker's reading of the inbox
+  const Blob* chain_end = nullptr;  ///< rest_recruit, resting at its deployment point: a free RED subgoal
   double nest_distance_cm = 0;
 };
 
@@ -90,6 +94,9 @@ struct TaTransition {
 };
 
 std::span<const TaTransition> ta_transitions();
+
+/// Index + 1 of the table row called `row` (e.g. "T10"), as TaMemory::last_row stores it; 0: none.
+std::uint8_t ta_row_number(std::string_view row);
 
 /// Reads the camera and the RAB inbox, and the robot's own state (its nest, its trip, whether it
 /// has ACKed robots), into `sight`.

@@ -244,6 +244,75 @@ TEST(TaTable, T9TheFounderJoinsThePathOnceDone) {
   EXPECT_EQ(rests.ta.state, TaState::kRestingTask);
 }
 
+// T10 [R rest_recruit]: a resting robot at its deployment point (kMe at the origin, the nest 5 m
+// west) that sees a chain's end, a RED subgoal 80 cm east that nobody claims
+RobotMemory resting_at_home() {
+  RobotMemory mem = robot(TaState::kRestingTask);
+  mem.start = {0.0, 0.0};
+  mem.ta.arrived = true;
+  return mem;
+}
+
+Reading chain_end_in_view() {
+  Reading r;
+  r.see(Led::kRed, 20, 80);
+  return r;
+}
+
+// the ticks until it joins the path formation (-1: not within `limit`)
+int ticks_to_join(RobotMemory& mem, const Reading& r, const Params& p, int limit) {
+  Percept in = r.percept();
+  for (int t = 0; t < limit; ++t, ++in.tick) {
+    task_allocation_step(in, p, mem, 100);
+    if (mem.ta.state == TaState::kPathFormation) return t + 1;
+  }
+  return -1;
+}
+
+TEST(TaTable, T10ARestingRobotJoinsAChainEndInViewForItsWait) {
+  const Params p;
+  ASSERT_TRUE(p.rest_recruit);
+  RobotMemory mem = resting_at_home();
+  const int ticks = ticks_to_join(mem, chain_end_in_view(), p, 3 * static_cast<int>(p.t_recruit));
+  ASSERT_GT(ticks, 0) << "never joined";
+  EXPECT_GE(ticks, static_cast<int>(p.t_recruit));  // T_recruit, plus its draw of up to as long again
+  EXPECT_LE(ticks, 2 * static_cast<int>(p.t_recruit) + 1);
+  EXPECT_EQ(mem.ta.last_row, 10);
+  EXPECT_EQ(mem.pf.target.id, 20);
+  // nearer the nest than the chain's end and d_sub from it: it stands as the next link at once
+  // (row #5), without first crossing the resting crowd to the end
+  EXPECT_EQ(mem.pf.last_row, pf_row_number("#5"));
+  EXPECT_EQ(mem.pf.state, PfState::kSubgoal);
+  EXPECT_EQ(mem.pf.parent.id, 20);
+  // one farther from the nest than the end walks to it first
+  RobotMemory beyond = resting_at_home();
+  Reading west = chain_end_in_view();
+  west.blobs[0].dir = {-1.0, 0.0};
+  ASSERT_GT(ticks_to_join(beyond, west, p, 3 * static_cast<int>(p.t_recruit)), 0);
+  EXPECT_EQ(beyond.pf.state, PfState::kSubgoalForming);
+  EXPECT_FALSE(beyond.pf.target_reached);
+}
+
+TEST(TaTable, T10NotForAClaimedSubgoalNorAwayFromHomeNorWhenOff) {
+  const Params p;
+  const int limit = 2 * static_cast<int>(p.t_recruit) + 10;
+  Reading claimed = chain_end_in_view();  // a WHITE robot forming from it names it on its light
+  claimed.blobs.push_back({Led::kWhite, 21, {1.0, 0.0}, 60, 20});
+  RobotMemory a = resting_at_home();
+  EXPECT_EQ(ticks_to_join(a, claimed, p, limit), -1);
+  Reading heard = chain_end_in_view();  // ... or claims it on the range-and-bearing medium
+  heard.hear(claim_message(22, 20), 250);
+  RobotMemory b = resting_at_home();
+  EXPECT_EQ(ticks_to_join(b, heard, p, limit), -1);
+  RobotMemory pushed_off = resting_at_home();
+  pushed_off.start = {0.0, 0.5};
+  EXPECT_EQ(ticks_to_join(pushed_off, chain_end_in_view(), p, limit), -1);
+  Params off;
+  off.rest_recruit = false;
+  RobotMemory c = resting_at_home();
+  EXPECT_EQ(ticks_to_join(c, chain_end_in_view(), off, limit), -1);
+}
+
 TEST(TaTable, EveryRowHasAGuardAndALabelledSpecRow) {
   for (const TaTransition& t : ta_transitions()) {
     EXPECT_NE(t.when, nullptr);
@@ -396,6 +465,26 @@ TEST(TaRun, OneChainNoSideBranches) {
   ASSERT_TRUE(f.success);
   EXPECT_GT(red_fan, f.path_robots + 10)
       << "side branches: " << red_fan << " RED for a path of " << f.path_robots;
+}
+
+// R rest_recruit (docs/CHOICES.md). With the frugal allocation (genomes/paper-frugal.toml) env1,
+// 60 robots, seed 1 allocates 19 robots; its chain bends and ends one link short, its nest-most RED
+// robot 1.2 m from the nest beacon beside the resting robots, and waits there to the end. A resting
+// robot that sees that free end joins it as the next link, and the path completes.
+TEST(TaRun, ARestingRobotCompletesAChainOneLinkShort) {
+  const Scenario s = env1_with(60);
+  Params off = load_params(test::source_path("genomes/paper-frugal.toml"));
+  off.rest_recruit = false;
+  const Metrics short_one = evaluate(off, s, Mode::kTaskAllocation, 1);
+  ASSERT_FALSE(short_one.success) << "the case this test is for: a chain that runs out of robots";
+  Params on = off;
+  on.rest_recruit = true;
+  const Metrics m = evaluate(on, s, Mode::kTaskAllocation, 1);
+  EXPECT_TRUE(m.success) << "no path after " << m.ticks << " ticks";
+  EXPECT_EQ(short_one.recruited, 0);
+  EXPECT_GE(m.recruited, 1);
+  EXPECT_LE(m.recruited, 3);                                  // a link or two, not the resting crowd
+  EXPECT_EQ(m.allocated, short_one.allocated + m.recruited);  // the recruits count as allocated
 }
 
 // SPEC §4.3: N_alloc counts every robot that initiated the task. env1, 70 robots, seed 3 has four
