@@ -52,9 +52,8 @@ struct TaMemory {
   double touch_base = 0;      ///< the proximity vector's length when it settled (static neighbours) [R]
   std::int64_t give_way = 0;  ///< ticks left backing away from a robot pressing on it (give_way) [R]
   Vec2 give_dir;              ///< the way it backs away, robot frame
-  std::int64_t end_seen =
-      0;  ///< rest_recruit: consecutive ticks a chain's end (free RED) has been in view [R]
-  std::int64_t end_wait = 0;  ///< rest_recruit: ticks this robot waits before joining it (T_recruit + a draw)
+  std::int64_t end_seen = 0;  ///< rest_recruit [R]: consecutive ticks a chain's end has been in view
+  std::int64_t end_wait = 0;  ///< rest_recruit: ticks it waits before joining (T_recruit + a draw)
   std::uint8_t last_row = 0;  ///< the TA table row that fired last (index + 1)
   std::int64_t fired_tick = -1;
 };
