@@ -58,6 +58,7 @@ void add_path_json(nlohmann::ordered_json& j, const sim::Metrics& m) {
   j["path_robots"] = m.path_robots;
   j["ticks_to_chain"] = tick_or_null(m.ticks_to_chain);
   j["ticks_to_opt1"] = tick_or_null(m.ticks_to_opt1);
+  j["ticks_to_goal"] = tick_or_null(m.ticks_to_goal);
   j["subgoals_laid"] = m.chain.subgoals_laid;
   j["subgoals_laid_goalward"] = m.chain.subgoals_laid_goalward;
   j["forming_from_goal_side"] = m.chain.forming_from_goal_side;

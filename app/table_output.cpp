@@ -183,7 +183,7 @@ void write_runs_csv(std::ostream& out, const std::vector<sim::Scenario>& scenari
   out << "scenario,robots,seed,mode,success,ticks_to_form,path_length_tu,subgoal_path_length_tu,"
          "opt1_path_length_tu,astar8_tu,path_robots,ticks_to_chain,ticks_to_opt1,allocated,"
          "resource_reduction_pct,ticks_to_allocate,ticks,state_hash,subgoals_laid,subgoals_laid_goalward,"
-         "forming_from_goal_side\n";
+         "forming_from_goal_side,ticks_to_goal,recruited\n";
   const auto num = [](double v) { return std::isnan(v) ? std::string() : fixed(v, 4); };
   const auto tick = [](std::int64_t t) { return t < 0 ? std::string() : std::to_string(t); };
   for (const GridRun& run : runs) {
@@ -195,7 +195,8 @@ void write_runs_csv(std::ostream& out, const std::vector<sim::Scenario>& scenari
         << ',' << tick(m.ticks_to_opt1) << ',' << (m.allocated >= 0 ? std::to_string(m.allocated) : "") << ','
         << num(m.resource_reduction_pct) << ',' << tick(m.ticks_to_allocate) << ',' << m.ticks << ','
         << sim::to_hex(m.state_hash) << ',' << m.chain.subgoals_laid << ',' << m.chain.subgoals_laid_goalward
-        << ',' << m.chain.forming_from_goal_side << '\n';
+        << ',' << m.chain.forming_from_goal_side << ',' << tick(m.ticks_to_goal) << ',' << m.recruited
+        << '\n';
   }
 }
 

@@ -40,7 +40,8 @@ SensorNeeds sensor_needs(Mode m) {
 bool robot_listens(Mode m, const RobotMemory& mem) {
   if (m != Mode::kTaskAllocation) return true;  // the world's needs.rab decides
   return mem.ta.state == TaState::kScout || mem.ta.state == TaState::kGoalFounder ||
-         mem.ta.state == TaState::kDecisionMaker || mem.pf.single_child;
+         mem.ta.state == TaState::kDecisionMaker || mem.pf.single_child ||
+         (mem.ta.state == TaState::kRestingTask && mem.ta.hears_calls);
 }
 
 Led initial_led(Mode m) {

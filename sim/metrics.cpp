@@ -13,6 +13,7 @@ void MetricsAccumulator::begin(int robots) {
   recruited_ = 0;
   recruit_row_ = ta_row_number("T10");
   distance_m_ = 0;
+  goal_tick_ = -1;
   path_ = PathObserver{};
   chain_ = ChainStatsObserver{};
 }
@@ -20,6 +21,15 @@ void MetricsAccumulator::begin(int robots) {
 void MetricsAccumulator::observe(const Scenario& s, const World& w) {
   if (w.mode != Mode::kPathFormation && w.mode != Mode::kTaskAllocation) return;
   watch_path_ = true;
+  if (goal_tick_ < 0) {              // how long finding the goal took (a diagnostic of exploration)
+    constexpr double kInView = 1.0;  // [m], the paper's R_vis
+    for (const Vec2& q : w.positions) {
+      if (dist(q, s.goal) <= kInView) {
+        goal_tick_ = w.tick;
+        break;
+      }
+    }
+  }
   path_.observe(s, w);
   chain_.observe(s, w);
   if (w.mode != Mode::kTaskAllocation) return;
@@ -58,6 +68,7 @@ Metrics MetricsAccumulator::finish(std::int64_t ticks, double dt, std::uint64_t 
   m.chain = chain_.stats();
   m.ticks_to_chain = m.subgoal_path.tick;
   m.ticks_to_opt1 = m.opt1_path.tick;
+  m.ticks_to_goal = goal_tick_;
   // a path can complete before any founder broadcasts DONE: the robots that initiated the task count
   m.allocated = alloc_tick_ >= 0 || ever_allocated_count_ > 0 ? ever_allocated_count_ : -1;
   m.ticks_to_allocate = alloc_tick_;

@@ -24,6 +24,8 @@ struct Metrics {
   std::int64_t ticks_to_form = -1;   ///< T_form (SPEC §4.1)
   std::int64_t ticks_to_chain = -1;  ///< T_chain: the subgoal chain reaches the nest
   std::int64_t ticks_to_opt1 = -1;   ///< T_opt1: optimisation 1 done
+  std::int64_t ticks_to_goal =
+      -1;  ///< the first tick a robot came within 1 m (the paper's R_vis) of the goal [R]
   double path_length_tu = std::numeric_limits<double>::quiet_NaN();          ///< final path (§4.2)
   double subgoal_path_length_tu = std::numeric_limits<double>::quiet_NaN();  ///< at T_chain
   double opt1_path_length_tu = std::numeric_limits<double>::quiet_NaN();     ///< at T_opt1
@@ -61,6 +63,7 @@ class MetricsAccumulator {
   PathObserver path_;
   ChainStatsObserver chain_;
   std::int64_t alloc_tick_ = -1;
+  std::int64_t goal_tick_ = -1;
   std::vector<std::uint8_t> ever_allocated_;  ///< per robot: has entered INITIATE_TASK
   int ever_allocated_count_ = 0;
   int recruited_ = 0;             ///< allocated robots whose first allocation was row T10 (rest_recruit)

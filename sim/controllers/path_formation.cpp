@@ -463,7 +463,11 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
   if (sight.lure == nullptr && sight.forming_link != nullptr) return wait_by_forming_robot(in, p, mem, sight);
   if (m.to_sighting) ++m.travel_ticks;
   if (m.to_sighting && (sight.lure != nullptr || dist(in.pose.p, m.sighting) < 0.5)) {
+    // [R sighting_returns] task allocation: arrived where the chain's tip was and nothing free
+    // there: the tip has moved nestward, past this robot; its trip ends and its way home passes it
+    if (p.sighting_returns && m.single_child && sight.lure == nullptr) m.explore_blocked = true;
     m.to_sighting = false;
+    m.answering = -1;
     mem.walk_heading = in.pose.yaw();
     mem.walk_dir = {in.pose.c, in.pose.s};
     nav_reset(mem.nav);
@@ -484,7 +488,7 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
                                           -field_toward(in.pose, mem.nest), in_crowd)) {
     return drive(p, mem, p.v_max * follow_edge(in, mem.nav.side), PfState::kExploring);
   }
-  mem.pf.explore_blocked = mem.nav.gave_up;
+  mem.pf.explore_blocked = mem.pf.explore_blocked || mem.nav.gave_up;
   const Avoidance avoid = diffusion(in.proximity, p);
   const Vec2 away = -field_toward(in.pose, mem.nest);
   Vec2 v = avoid.direction + p.w_away * away + p.w_rw * in.pose.to_local(mem.walk_dir) + sight.repulsion;
@@ -727,6 +731,8 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   track(m.parent, in, p, false);
   track(m.child, in, p, true);
   if (m.bypass && m.state == PfState::kSubgoal) perceive_bypass(in, p, m, claims, sight);
+  // recruit_call [R]: how long this subgoal has gone without a robot forming from it or naming it
+  m.unclaimed = m.call_links && m.state == PfState::kSubgoal && !claims.has(in.id) ? m.unclaimed + 1 : 0;
   if (m.target.visible && dist(in.pose.p, m.target.last_seen) / kCm <= p.d_detect) m.target_reached = true;
   // forming robots that lose their target at least d_sub/2 from it, nearer the nest, go back to
   // the last place they saw it and stop there (row 7a): the chain bends round the obstacle
@@ -840,6 +846,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
     m.claimants = Claimants{};
     m.guide = false;
     m.follow_guide = false;
+    m.answering = -1;
     if (fired->to == PfState::kReturnToNest && !m.sighted_this_trip) m.has_sighting = false;  // a stale lead
     if (fired->to == PfState::kExploring) {
       // a new trip: head for the last sighting (site fidelity), else keep the random heading
@@ -887,8 +894,16 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   const bool chained = m.state != PfState::kExploring && m.state != PfState::kReturnToNest &&
                        m.state != PfState::kResting && m.state != PfState::kRecovery;
   if (m.single_child && chained && cmd.tag != kNobody) {
+    TaMessage claim = claim_message(static_cast<std::uint8_t>(in.id), cmd.tag);
+    // recruit_call: a subgoal nobody has claimed for T_starve calls resting robots
+    if (m.state == PfState::kSubgoal && static_cast<double>(m.unclaimed) >= p.t_starve && m.call_links)
+      claim.flags = static_cast<std::uint8_t>(claim.flags | kFlagNeed);
     cmd.rab_send = true;
-    cmd.rab = encode(claim_message(static_cast<std::uint8_t>(in.id), cmd.tag));
+    cmd.rab = encode(claim);
+  } else if (m.state == PfState::kExploring && m.answering >= 0) {
+    // ... and a robot answering the call claims it on its way, so that no other robot answers
+    cmd.rab_send = true;
+    cmd.rab = encode(claim_message(static_cast<std::uint8_t>(in.id), m.answering));
   }
   // guided departure: a guide's light carries its hop count to the founder instead
   if (cmd.led == Led::kCyan) cmd.tag = m.guide ? 0 : m.guide_hops;

@@ -20,12 +20,13 @@ inline constexpr std::uint8_t kBroadcastId = 255;   ///< destination "all" / par
 inline constexpr std::uint8_t kFlagAllocDone = 1;   ///< flags bit 0: the allocation is over
 inline constexpr std::uint8_t kFlagGoal = 2;        ///< flags bit 1: bytes 10-13 hold the goal [R]
 inline constexpr std::uint8_t kFlagAllocating = 4;  ///< flags bit 2: this founder has ACKed a robot [R]
-inline constexpr int kMaxTaRobots = 254;            ///< ids travel in one byte
+inline constexpr std::uint8_t kFlagNeed = 8;  ///< flags bit 3: a subgoal calls for a link (recruit_call) [R]
+inline constexpr int kMaxTaRobots = 254;      ///< ids travel in one byte
 
 /// SPEC §2.6 framing of the 10-byte payload: 0 id; 1 state; 2 parent id (255 none); 3 flags
-/// (bit 0 ALLOC_DONE; [R] bit 1 goal, bit 2 allocating); 4 message type; 5 destination id (255 all); 6-7
-/// remaining; 8-9 t_founder/10; and [R] 10-13 the founder's goal sighting relative to the nest (x, y in cm,
-/// signed; flags bit 1).
+/// (bit 0 ALLOC_DONE; [R] bit 1 goal, bit 2 allocating, bit 3 a subgoal calling for a link); 4 message type;
+/// 5 destination id (255 all); 6-7 remaining; 8-9 t_founder/10; and [R] 10-13 the founder's goal sighting
+/// relative to the nest (x, y in cm, signed; flags bit 1).
 struct TaMessage {
   std::uint8_t id = 0;
   std::uint8_t state = 0;
@@ -43,6 +44,8 @@ struct TaMessage {
   bool has_goal() const { return (flags & kFlagGoal) != 0; }
 
   bool allocating() const { return (flags & kFlagAllocating) != 0; }
+
+  bool needs_link() const { return (flags & kFlagNeed) != 0; }
 };
 
 /// A set of robot ids as they travel on the medium (one byte each).

@@ -46,6 +46,7 @@ void ta_init(RobotMemory& mem, const Params& p) {
   pf_init(mem.pf, p);
   mem.pf.scout = true;
   mem.ta = TaMemory{};
+  mem.ta.hears_calls = p.rest_recruit && p.recruit_call;
 }
 
 namespace {
@@ -101,7 +102,8 @@ bool founder_done(const TaContext& c) {  // T9, the founder not counting itself
 // T10 [R rest_recruit]: a chain's end in view for the robot's wait: the chain ran out of robots
 // within sight of the deployment area
 bool chain_end_starved(const TaContext& c) {
-  return c.sight.chain_end != nullptr && c.m.end_seen > 0 && c.m.end_seen >= c.m.end_wait;
+  return (c.sight.chain_end != nullptr || c.sight.call != nullptr) && c.m.end_seen > 0 &&
+         c.m.end_seen >= c.m.end_wait;
 }
 
 bool acked(const TaContext& c) { return c.sight.dm.decision == DmDecision::kGo; }  // T5, TA e
@@ -136,6 +138,7 @@ void start_path_formation(const TaContext& c, RobotMemory& mem, double t_founder
   mem.pf.seek_tip = c.p.single_child && c.p.seek_tip;
   mem.pf.bypass = c.p.single_child && c.p.chain_bypass;
   mem.pf.nest_crowd_cm = c.p.nest_crowd;
+  mem.pf.call_links = c.p.single_child && c.p.rest_recruit && c.p.recruit_call;
   mem.trail.reset(c.in.pose.p);
 }
 
@@ -163,7 +166,16 @@ void dm_initiates(const TaContext& c, RobotMemory& mem) {
 // T10 [R rest_recruit]: path formation, forming the next link from the chain's end in view
 void join_chain_end(const TaContext& c, RobotMemory& mem) {
   start_path_formation(c, mem, mem.pf.t_explore / 10.0);
-  pf_join_chain_end(mem.pf, c.p, *c.sight.chain_end, c.in.pose, mem.nest, c.in.tick);
+  if (c.sight.chain_end != nullptr) {
+    pf_join_chain_end(mem.pf, c.p, *c.sight.chain_end, c.in.pose, mem.nest, c.in.tick);
+    return;
+  }
+  // recruit_call: out of view, where the medium says the caller is; claimed on the way
+  const RabMessage& call = *c.sight.call;
+  mem.pf.sighting = c.in.pose.p + (call.range_cm / 100.0) * c.in.pose.to_world(unit(call.bearing));
+  mem.pf.has_sighting = true;
+  mem.pf.to_sighting = true;
+  mem.pf.answering = call.sender;
 }
 
 // clang-format off
@@ -223,6 +235,23 @@ Command give_way(const Params& p, RobotMemory& mem) {
   return drive_command(0.5 * p.v_max * mem.ta.give_dir, p, mem.turn, Led::kBlack);
 }
 
+// recruit_call [R]: the nearest subgoal calling for a link that no robot on the medium claims
+const RabMessage* unanswered_call(std::span<const RabMessage> inbox) {
+  IdSet claimed;
+  for (const RabMessage& r : inbox) {
+    const int named = claimed_emitter(decode(r.data));
+    if (named >= 0 && named <= 255) claimed.insert(static_cast<std::uint8_t>(named));
+  }
+  const RabMessage* best = nullptr;
+  for (const RabMessage& r : inbox) {
+    const TaMessage m = decode(r.data);
+    if (!m.needs_link() || claimed_emitter(m) == kNobody || r.sender < 0 || r.sender > 255) continue;
+    if (claimed.contains(static_cast<std::uint8_t>(r.sender))) continue;
+    if (best == nullptr || r.range_cm < best->range_cm) best = &r;
+  }
+  return best;
+}
+
 bool joined(std::uint8_t founder, std::span<const RabMessage> inbox) {
   for (const RabMessage& r : inbox) {
     const TaMessage m = decode(r.data);
@@ -278,6 +307,7 @@ void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaS
   if (p.rest_recruit && mem.ta.state == TaState::kRestingTask && mem.ta.arrived &&
       100.0 * dist(in.pose.p, mem.start) <= p.d_detect) {
     sight.chain_end = free_subgoal_in_view(in);
+    if (sight.chain_end == nullptr && p.recruit_call) sight.call = unanswered_call(in.rab);
   }
 }
 
@@ -300,7 +330,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
   TaMemory& m = mem.ta;
   TaSight sight;
   ta_perceive(in, p, mem, sight);
-  if (sight.chain_end == nullptr) {
+  if (sight.chain_end == nullptr && sight.call == nullptr) {
     m.end_seen = 0;
   } else if (m.end_seen++ == 0) {  // R rest_recruit: T_recruit plus a draw, so that one of several goes
     const auto extra = static_cast<std::uint64_t>(std::max(0.0, std::round(p.t_recruit)));

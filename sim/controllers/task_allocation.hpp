@@ -54,6 +54,7 @@ struct TaMemory {
   Vec2 give_dir;              ///< the way it backs away, robot frame
   std::int64_t end_seen = 0;  ///< rest_recruit [R]: consecutive ticks a chain's end has been in view
   std::int64_t end_wait = 0;  ///< rest_recruit: ticks it waits before joining (T_recruit + a draw)
+  bool hears_calls = false;   ///< recruit_call: listens to the medium while resting [R]
   std::uint8_t last_row = 0;  ///< the TA table row that fired last (index + 1)
   std::int64_t fired_tick = -1;
 };
@@ -68,7 +69,8 @@ struct TaSight {
   bool alloc_done_heard = false;
   std::uint8_t senior_founder = kBroadcastId;  ///< a founder that outranks this one (T8)
   DmTick dm;                                   ///< the decision maker's reading of the inbox
-  const Blob* chain_end = nullptr;  ///< rest_recruit, resting at its deployment point: a free RED subgoal
+  const Blob* chain_end = nullptr;   ///< rest_recruit, resting at its deployment point: a free RED subgoal
+  const RabMessage* call = nullptr;  ///< recruit_call: the nearest subgoal calling for a link, unanswered
   double nest_distance_cm = 0;
 };
 

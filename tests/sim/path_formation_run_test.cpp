@@ -86,6 +86,24 @@ TEST(PfRun, AShortChainFormsAndBothPassesComplete) {
   EXPECT_EQ(chain_to_goal(w, m.final_path.robots.front()), m.final_path.robots);
 }
 
+// ticks_to_goal [R diagnostic]: the first tick a robot stood within 1 m of the goal, as a tick
+// observer sees it; before the first subgoal (a robot must reach the goal to form from it)
+TEST(PfRun, TicksToGoalIsTheFirstTickARobotCameWithinAMetreOfTheGoal) {
+  const Scenario s = short_chain();
+  std::int64_t seen = -1;
+  const Metrics m = run(Params{}, s, Mode::kPathFormation, 1, [&](const World& w) {
+    for (const Vec2& q : w.positions) {
+      if (seen < 0 && dist(q, s.goal) <= 1.0) seen = w.tick;
+    }
+    return false;
+  });
+  ASSERT_TRUE(m.success);
+  ASSERT_GE(seen, 0);
+  EXPECT_EQ(m.ticks_to_goal, seen);
+  EXPECT_GT(m.ticks_to_goal, 0);  // the robots start at the nest, 3.6 m away
+  EXPECT_LT(m.ticks_to_goal, m.ticks_to_chain);
+}
+
 // A SUB_NEST robot whose parent finished its optimisation 1 behind an obstacle's corner (out of
 // view; the camera's view of a corner need not be mutual) waited for ever for row 11 (env4, 90
 // robots, seed 1). It drives toward where it last saw the parent until it sees it (R).

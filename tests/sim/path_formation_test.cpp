@@ -650,5 +650,94 @@ TEST(SeekTip, WalksToTheRobotFormingTheNextLinkAndWaitsBesideIt) {
   EXPECT_GT(std::abs(on.left_cm_s) + std::abs(on.right_cm_s), 1.0);
 }
 
+// R: recruit_call (task allocation). A RED subgoal, its parent 7 ahead, that no robot forms from or
+// names as parent calls resting robots on the medium once T_starve ticks have passed.
+RobotMemory calling_subgoal() {
+  RobotMemory mem = init_memory(Mode::kPathFormation, kMe, {{0.0, 0.0}, 1.0, 0.0}, kNest, Params{}, 1);
+  mem.pf.state = PfState::kSubgoal;
+  mem.pf.single_child = true;
+  mem.pf.call_links = true;
+  mem.pf.parent = tracked(7, {0.7, 0.0});
+  return mem;
+}
+
+// the first tick (from 1) whose message calls for a link; 0: none within `limit`
+int first_call(RobotMemory& mem, const Reading& r, const Params& p, int limit) {
+  Reading at = r;
+  for (int t = 1; t <= limit; ++t, ++at.tick) {
+    const Command cmd = path_formation_step(at.percept(), p, mem);
+    EXPECT_EQ(mem.pf.state, PfState::kSubgoal);
+    if (cmd.rab_send && decode(cmd.rab).needs_link()) return t;
+  }
+  return 0;
+}
+
+TEST(RecruitCall, ASubgoalNobodyClaimsCallsAfterTStarve) {
+  Params p;
+  p.recruit_call = true;
+  const int limit = static_cast<int>(p.t_starve) + 50;
+  Reading alone;
+  alone.add(Led::kRed, 7, 0, 70, 6);
+  RobotMemory a = calling_subgoal();
+  EXPECT_EQ(first_call(a, alone, p, limit), static_cast<int>(p.t_starve));
+  Reading claimed = alone;  // a robot forming from it names it on its light
+  claimed.add(Led::kWhite, 9, 180, 60, kMe);
+  RobotMemory b = calling_subgoal();
+  EXPECT_EQ(first_call(b, claimed, p, limit), 0);
+  Reading heard = alone;  // ... or a robot answering a call claims it on the medium
+  RabMessage msg;
+  msg.sender = 12;
+  msg.data = encode(claim_message(12, kMe));
+  heard.rab.push_back(msg);
+  RobotMemory c = calling_subgoal();
+  EXPECT_EQ(first_call(c, heard, p, limit), 0);
+  RobotMemory d = calling_subgoal();  // without the option it never calls
+  d.pf.call_links = false;
+  EXPECT_EQ(first_call(d, alone, p, limit), 0);
+}
+
+// R: sighting_returns (task allocation). An allocated explorer back where it saw the chain's tip
+// (its sighting follows the nest-most RED robot in view) with nothing free in view there ends its
+// trip: the tip has moved nestward, past it.
+RobotMemory at_the_sighting() {
+  RobotMemory mem = init_memory(Mode::kPathFormation, kMe, {{0.0, 0.0}, 1.0, 0.0}, kNest, Params{}, 1);
+  mem.pf.single_child = true;
+  mem.pf.sighting = {0.2, 0.0};
+  mem.pf.has_sighting = true;
+  mem.pf.to_sighting = true;
+  mem.pf.t_explore = 5000;
+  return mem;
+}
+
+TEST(SightingReturns, NothingFreeWhereTheTipWasEndsTheTrip) {
+  Params p;
+  p.sighting_returns = true;
+  Reading claimed_only;  // the subgoal it saw there is claimed now: robot 9 forms from it
+  claimed_only.add(Led::kRed, 7, 0, 40, 6);
+  claimed_only.add(Led::kWhite, 9, 180, 60, 7);
+  RobotMemory mem = at_the_sighting();
+  Reading r = claimed_only;
+  path_formation_step(r.percept(), p, mem);
+  EXPECT_FALSE(mem.pf.to_sighting);
+  ++r.tick;
+  path_formation_step(r.percept(), p, mem);
+  EXPECT_EQ(mem.pf.state, PfState::kReturnToNest);
+  EXPECT_EQ(mem.pf.last_row, pf_row_number("#2"));
+  // a free subgoal in view there lures it instead; without the option it explores on
+  Reading free_end;
+  free_end.add(Led::kRed, 7, 0, 40, 6);
+  RobotMemory lured = at_the_sighting();
+  path_formation_step(free_end.percept(), p, lured);
+  ++free_end.tick;
+  path_formation_step(free_end.percept(), p, lured);
+  EXPECT_EQ(lured.pf.state, PfState::kExploring);
+  RobotMemory off = at_the_sighting();
+  Reading r2 = claimed_only;
+  path_formation_step(r2.percept(), Params{}, off);
+  ++r2.tick;
+  path_formation_step(r2.percept(), Params{}, off);
+  EXPECT_EQ(off.pf.state, PfState::kExploring);
+}
+
 }  // namespace
 }  // namespace swarmpath::sim

@@ -313,6 +313,61 @@ TEST(TaTable, T10NotForAClaimedSubgoalNorAwayFromHomeNorWhenOff) {
   EXPECT_EQ(ticks_to_join(c, chain_end_in_view(), off, limit), -1);
 }
 
+// T10 with recruit_call [R]: the chain's end is out of view (2.5 m east), but it calls on the
+// range-and-bearing medium: a claim message (its parent) with the need flag
+Reading call_heard(double range_cm = 250.0) {
+  TaMessage call = claim_message(20, 19);
+  call.flags = static_cast<std::uint8_t>(call.flags | kFlagNeed);
+  Reading r;
+  r.hear(call, range_cm);
+  return r;
+}
+
+Params calling() {
+  Params p;
+  p.recruit_call = true;
+  return p;
+}
+
+TEST(TaTable, T10ARestingRobotAnswersACallFromAChainEndOutOfView) {
+  const Params p = calling();
+  RobotMemory mem = resting_at_home();
+  const int ticks = ticks_to_join(mem, call_heard(), p, 3 * static_cast<int>(p.t_recruit));
+  ASSERT_GT(ticks, 0) << "never answered";
+  EXPECT_GE(ticks, static_cast<int>(p.t_recruit));  // T_recruit plus its draw, as for a chain end in view
+  EXPECT_EQ(mem.ta.last_row, 10);
+  // it goes where the medium says the caller is, 2.5 m east, exploring (row 1 takes it from there)
+  EXPECT_EQ(mem.pf.state, PfState::kExploring);
+  EXPECT_TRUE(mem.pf.to_sighting);
+  EXPECT_NEAR(mem.pf.sighting.x, 2.5, 1e-9);
+  EXPECT_NEAR(mem.pf.sighting.y, 0.0, 1e-9);
+  EXPECT_EQ(mem.pf.answering, 20);
+  // ... claiming the caller on the medium on its way, so that no other resting robot answers
+  Percept in = call_heard().percept();
+  in.tick += ticks;
+  const Command cmd = task_allocation_step(in, p, mem, 100);
+  ASSERT_TRUE(cmd.rab_send);
+  EXPECT_EQ(claimed_emitter(decode(cmd.rab)), 20);
+}
+
+TEST(TaTable, T10NoAnswerToACallAlreadyAnsweredNorWithoutTheFlagNorWhenOff) {
+  const Params p = calling();
+  const int limit = 2 * static_cast<int>(p.t_recruit) + 10;
+  Reading answered = call_heard();  // another robot claims the caller on the medium
+  answered.hear(claim_message(22, 20), 100);
+  RobotMemory a = resting_at_home();
+  EXPECT_EQ(ticks_to_join(a, answered, p, limit), -1);
+  Reading plain;  // a subgoal's ordinary claim of its parent, no call
+  plain.hear(claim_message(20, 19), 250);
+  RobotMemory b = resting_at_home();
+  EXPECT_EQ(ticks_to_join(b, plain, p, limit), -1);
+  RobotMemory c = resting_at_home();
+  EXPECT_EQ(ticks_to_join(c, call_heard(), Params{}, limit), -1);  // recruit_call off (paper.toml)
+  RobotMemory pushed_off = resting_at_home();                      // only from its own deployment point
+  pushed_off.start = {0.0, 0.5};
+  EXPECT_EQ(ticks_to_join(pushed_off, call_heard(), p, limit), -1);
+}
+
 TEST(TaTable, EveryRowHasAGuardAndALabelledSpecRow) {
   for (const TaTransition& t : ta_transitions()) {
     EXPECT_NE(t.when, nullptr);
@@ -485,6 +540,28 @@ TEST(TaRun, ARestingRobotCompletesAChainOneLinkShort) {
   EXPECT_GE(m.recruited, 1);
   EXPECT_LE(m.recruited, 3);                                  // a link or two, not the resting crowd
   EXPECT_EQ(m.allocated, short_one.allocated + m.recruited);  // the recruits count as allocated
+}
+
+// R recruit_call (docs/CHOICES.md). With the frugal allocation env1, 90 robots, seed 10 allocates
+// 19 robots and its chain stops about 3 m short of the deployment square: out of every resting
+// robot's 1 m view, so rest_recruit alone cannot close it. Its end calls on the medium (3 m), the
+// resting robots it reaches answer one at a time, and the path completes with a few more links.
+TEST(TaRun, AChainEndOutOfViewCallsTheRestingRobotsItNeeds) {
+  const Scenario s = env1_with(90);
+  Params off = load_params(test::source_path("genomes/paper-frugal.toml"));
+  off.rest_recruit = true;
+  off.recruit_call = false;
+  off.sighting_returns = false;
+  const Metrics quiet = evaluate(off, s, Mode::kTaskAllocation, 10);
+  ASSERT_FALSE(quiet.success) << "the case this test is for: a chain that runs out of view";
+  EXPECT_EQ(quiet.recruited, 0);
+  Params on = off;
+  on.recruit_call = true;
+  const Metrics m = evaluate(on, s, Mode::kTaskAllocation, 10);
+  EXPECT_TRUE(m.success) << "no path after " << m.ticks << " ticks";
+  EXPECT_GE(m.recruited, 1);
+  EXPECT_LE(m.recruited, 5);  // the links it lacked, not the resting crowd
+  EXPECT_EQ(m.allocated, quiet.allocated + m.recruited);
 }
 
 // SPEC §4.3: N_alloc counts every robot that initiated the task. env1, 70 robots, seed 3 has four
