@@ -111,10 +111,12 @@ struct Params {
                               ///< nest, at the crowd's rim [R]
   bool rest_recruit = true;   ///< TA: a resting robot at its deployment point that sees a chain's end (a free
                               ///< RED subgoal) for T_recruit ticks joins it as the next link [R]
-  bool recruit_call = false;  ///< TA, rest_recruit: a subgoal nobody has claimed for T_starve ticks calls
+  bool recruit_call = true;   ///< TA, rest_recruit: a subgoal nobody has claimed for T_starve ticks calls
                               ///< resting robots over the medium (3 m) [R]
   double t_starve = 600;      ///< TA, recruit_call: ticks unclaimed before a subgoal calls [ticks]
-  bool sighting_returns = false;  ///< TA, single_child: nothing free at the sighting -> home [R]
+  double t_founder_wait =
+      3000;  ///< TA: the founder stops allocating after this long without a JOIN [ticks] [R]
+  bool sighting_returns = true;  ///< TA, single_child: nothing free at the sighting -> home [R]
   double t_recruit = 300;  ///< TA, rest_recruit: ticks the free subgoal stays in view first (plus up to as
                            ///< many again, drawn per robot, so that one robot goes) [ticks]
 };

@@ -363,9 +363,9 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
         m.protocol = start_founder(m.n - (p.founder_counts_self ? 1 : 0));
       }
       if (m.protocol_started) {
-        // no JOIN for T_dm_wait ticks: nobody is left to ask; allocate what it has [R]
+        // no JOIN for T_founder_wait ticks: nobody is left to ask; allocate what it has [R]
         m.waited = m.protocol.remaining > 0 && !joined(id, in.rab) ? m.waited + 1 : 0;
-        if (static_cast<double>(m.waited) >= p.t_dm_wait) m.protocol.remaining = 0;
+        if (static_cast<double>(m.waited) >= p.t_founder_wait) m.protocol.remaining = 0;
         const auto t = static_cast<std::uint16_t>(std::min(65535.0, std::round(m.t_founder_s)));
         TaMessage msg = founder_tick(m.protocol, id, t, in.rab);
         if (p.share_goal && mem.pf.has_sighting) {  // R: its messages (the ACK) tell where it saw the goal

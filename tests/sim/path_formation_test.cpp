@@ -731,11 +731,13 @@ TEST(SightingReturns, NothingFreeWhereTheTipWasEndsTheTrip) {
   ++free_end.tick;
   path_formation_step(free_end.percept(), p, lured);
   EXPECT_EQ(lured.pf.state, PfState::kExploring);
+  Params no;
+  no.sighting_returns = false;
   RobotMemory off = at_the_sighting();
   Reading r2 = claimed_only;
-  path_formation_step(r2.percept(), Params{}, off);
+  path_formation_step(r2.percept(), no, off);
   ++r2.tick;
-  path_formation_step(r2.percept(), Params{}, off);
+  path_formation_step(r2.percept(), no, off);
   EXPECT_EQ(off.pf.state, PfState::kExploring);
 }
 

@@ -343,7 +343,8 @@ TEST(TaTable, T10ARestingRobotAnswersACallFromAChainEndOutOfView) {
   EXPECT_NEAR(mem.pf.sighting.y, 0.0, 1e-9);
   EXPECT_EQ(mem.pf.answering, 20);
   // ... claiming the caller on the medium on its way, so that no other resting robot answers
-  Percept in = call_heard().percept();
+  const Reading heard = call_heard();  // the percept's spans point into it
+  Percept in = heard.percept();
   in.tick += ticks;
   const Command cmd = task_allocation_step(in, p, mem, 100);
   ASSERT_TRUE(cmd.rab_send);
@@ -361,8 +362,10 @@ TEST(TaTable, T10NoAnswerToACallAlreadyAnsweredNorWithoutTheFlagNorWhenOff) {
   plain.hear(claim_message(20, 19), 250);
   RobotMemory b = resting_at_home();
   EXPECT_EQ(ticks_to_join(b, plain, p, limit), -1);
+  Params off = p;
+  off.recruit_call = false;
   RobotMemory c = resting_at_home();
-  EXPECT_EQ(ticks_to_join(c, call_heard(), Params{}, limit), -1);  // recruit_call off (paper.toml)
+  EXPECT_EQ(ticks_to_join(c, call_heard(), off, limit), -1);
   RobotMemory pushed_off = resting_at_home();                      // only from its own deployment point
   pushed_off.start = {0.0, 0.5};
   EXPECT_EQ(ticks_to_join(pushed_off, call_heard(), p, limit), -1);
@@ -530,6 +533,8 @@ TEST(TaRun, ARestingRobotCompletesAChainOneLinkShort) {
   const Scenario s = env1_with(60);
   Params off = load_params(test::source_path("genomes/paper-frugal.toml"));
   off.rest_recruit = false;
+  off.recruit_call = false;  // the chain's end in view: T10 by the camera alone (stop 25's rule)
+  off.sighting_returns = false;
   const Metrics short_one = evaluate(off, s, Mode::kTaskAllocation, 1);
   ASSERT_FALSE(short_one.success) << "the case this test is for: a chain that runs out of robots";
   Params on = off;
@@ -618,7 +623,8 @@ TEST(Determinism, GoldenHashTaskAllocationShortChain) {
   // stop 22: trap_progress 30 cm (was 5), 1224 -> 1853 ticks
   // stop 24: trails that never join two sides of a wall, return_finds (the goal), 1853 -> 2080
   // stop 24: skip_blocked_crumbs (a robot going home passes over a crumb it cannot reach), -> 1854
-  constexpr std::uint64_t kExpected = 0x6bb62f7cf4852a33ULL;  // complete: 1854 ticks, 20 allocated
+  // stop 26: sighting_returns (an allocated robot with nothing free at its sighting goes home), -> 1683
+  constexpr std::uint64_t kExpected = 0xc8bd481fde690461ULL;  // complete: 1683 ticks, 20 allocated
   Params p;
   p.delta_open = 5;  // SPEC §2.7's default, so that some of the 20 robots rest
   const Metrics m = evaluate(p, with_max_ticks(short_chain(), 20000), Mode::kTaskAllocation, 1);
