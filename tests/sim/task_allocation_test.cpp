@@ -244,6 +244,26 @@ TEST(TaTable, T9TheFounderJoinsThePathOnceDone) {
   EXPECT_EQ(rests.ta.state, TaState::kRestingTask);
 }
 
+// R T_founder_wait: a founder at the nest that still needs robots and hears no JOIN stops
+// allocating after T_founder_wait ticks (not the decision makers' T_dm_wait) and broadcasts DONE
+TEST(TaTable, AFounderHearingNoJoinForTFounderWaitStopsAllocating) {
+  Params p;
+  p.t_founder_wait = 20;
+  p.t_dm_wait = 3000;
+  RobotMemory mem = robot(TaState::kGoalFounder);
+  mem.nest = {0.0, 0.0};  // it stands at the nest
+  mem.ta.n = 10;
+  const Reading quiet;
+  Percept in = quiet.percept();
+  for (int t = 0; t < 19; ++t, ++in.tick) task_allocation_step(in, p, mem, 100);
+  ASSERT_TRUE(mem.ta.protocol_started);
+  EXPECT_GT(mem.ta.protocol.remaining, 0);
+  Command cmd;
+  for (int t = 0; t < 3; ++t, ++in.tick) cmd = task_allocation_step(in, p, mem, 100);
+  EXPECT_EQ(mem.ta.protocol.remaining, 0);
+  EXPECT_EQ(decode(cmd.rab).type, MsgType::kDone);
+}
+
 // T10 [R rest_recruit]: a resting robot at its deployment point (kMe at the origin, the nest 5 m
 // west) that sees a chain's end, a RED subgoal 80 cm east that nobody claims
 RobotMemory resting_at_home() {
@@ -366,7 +386,7 @@ TEST(TaTable, T10NoAnswerToACallAlreadyAnsweredNorWithoutTheFlagNorWhenOff) {
   off.recruit_call = false;
   RobotMemory c = resting_at_home();
   EXPECT_EQ(ticks_to_join(c, call_heard(), off, limit), -1);
-  RobotMemory pushed_off = resting_at_home();                      // only from its own deployment point
+  RobotMemory pushed_off = resting_at_home();  // only from its own deployment point
   pushed_off.start = {0.0, 0.5};
   EXPECT_EQ(ticks_to_join(pushed_off, call_heard(), p, limit), -1);
 }
