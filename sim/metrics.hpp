@@ -24,8 +24,7 @@ struct Metrics {
   std::int64_t ticks_to_form = -1;   ///< T_form (SPEC §4.1)
   std::int64_t ticks_to_chain = -1;  ///< T_chain: the subgoal chain reaches the nest
   std::int64_t ticks_to_opt1 = -1;   ///< T_opt1: optimisation 1 done
-  std::int64_t ticks_to_goal =
-      -1;  ///< the first tick a robot came within 1 m (the paper's R_vis) of the goal [R]
+  std::int64_t ticks_to_goal = -1;   ///< first tick a robot was within 1 m (R_vis) of the goal [R]
   double path_length_tu = std::numeric_limits<double>::quiet_NaN();          ///< final path (§4.2)
   double subgoal_path_length_tu = std::numeric_limits<double>::quiet_NaN();  ///< at T_chain
   double opt1_path_length_tu = std::numeric_limits<double>::quiet_NaN();     ///< at T_opt1
