@@ -86,8 +86,11 @@ struct Params {
       false;  ///< forming: back off to the spot d_sub from the target toward the nest (else along the trail)
   bool share_goal = true;  ///< TA: the founder's ACK carries where it saw the goal (relative to the nest)
   bool seek_hidden_reference = true;  ///< aligning: a reference out of view at the start is looked for first
-  double trail_slack = 45;       ///< forming, retracing its way home: how much farther from the nest than its
-                                 ///< target a robot may stop as a subgoal [cm] [R]
+  bool nudge_parent = true;  ///< SUB_NEST: a parent still RED after T_nudge ticks cannot see this robot (a
+                             ///< corner's view need not be mutual): close in on it until it turns [R]
+  double t_nudge = 100;      ///< nudge_parent: ticks a sub-nest waits for its parent's OPT1 first [ticks]
+  double trail_slack = 45;   ///< forming, retracing its way home: how much farther from the nest than its
+                             ///< target a robot may stop as a subgoal [cm] [R]
   bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
   bool single_child = true;      ///< TA: allocated explorers attach only to an unclaimed goal or subgoal [R]
   bool ta_backoff_spot = true;   ///< TA: allocated robots back off to the spot toward the nest [R]
@@ -106,6 +109,8 @@ struct Params {
                                   ///< R_nest_reach from the nest [R]
   bool return_finds = true;  ///< a robot going back to the nest (budget spent) that finds the goal within
                              ///< d_detect takes it as an explorer would (SPEC rule #1, TA T2) [R]
+  bool return_lured = true;  ///< TA: a scout going home that sees the goal (within R_vis) goes to it, so that
+                             ///< return_finds makes it the founder [R]
   bool skip_blocked_crumbs = true;  ///< a robot going home passes over a crumb it cannot reach in T_trap [R]
   double founder_wait = 0.9;  ///< TA: the founder runs the protocol this fraction of R_nest_reach from the
                               ///< nest, at the crowd's rim [R]

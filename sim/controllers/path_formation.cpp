@@ -501,6 +501,10 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
 // navigator's direction (the field, or the obstacle's edge when trapped).
 Command go_to_nest(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight, PfState s) {
   const Avoidance avoid = diffusion(in.proximity, p);
+  // [R return_lured] a task-allocation scout going home that sees the goal has found it: to it, and T2
+  if (s == PfState::kReturnToNest && mem.pf.scout && p.return_finds && p.return_lured &&
+      sight.goal != nullptr)
+    return drive(p, mem, p.v_max * (avoid.direction + sight.goal->dir + sight.repulsion), s);
   const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest);
   Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
   return drive(p, mem, p.v_max * v, s);
@@ -559,6 +563,13 @@ Command look_for(const Percept& in, const Params& p, RobotMemory& mem, Vec2 towa
 Command wait_for_parent(const Percept& in, const Params& p, RobotMemory& mem) {
   const PfMemory& m = mem.pf;
   const PfState s = PfState::kSubNest;
+  // [R nudge_parent] the parent sees this robot only past a corner from its own side, if at all:
+  // still RED (row 9b not taken) T_nudge ticks on, close in on it until it turns
+  if (p.nudge_parent && m.parent.visible && m.parent.color == Led::kRed &&
+      static_cast<double>(m.t_state) >= p.t_nudge && !lost(m.child, p)) {
+    const Vec2 toward = local_cm(in.pose, m.parent);
+    if (norm(toward) > p.d_detect) return look_for(in, p, mem, toward, s);
+  }
   if (!p.seek_hidden_reference || !lost(m.parent, p) || lost(m.child, p)) return stop(s);
   const Vec2 toward = local_cm(in.pose, m.parent);
   if (norm(toward) <= p.d_detect) return stop(s);

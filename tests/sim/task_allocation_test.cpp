@@ -555,6 +555,8 @@ TEST(TaRun, ARestingRobotCompletesAChainOneLinkShort) {
   off.rest_recruit = false;
   off.recruit_call = false;  // the chain's end in view: T10 by the camera alone (stop 25's rule)
   off.sighting_returns = false;
+  off.return_lured = false;  // stop 27's rules change the run; the case is stop 25's
+  off.nudge_parent = false;
   const Metrics short_one = evaluate(off, s, Mode::kTaskAllocation, 1);
   ASSERT_FALSE(short_one.success) << "the case this test is for: a chain that runs out of robots";
   Params on = off;
@@ -577,6 +579,8 @@ TEST(TaRun, AChainEndOutOfViewCallsTheRestingRobotsItNeeds) {
   off.rest_recruit = true;
   off.recruit_call = false;
   off.sighting_returns = false;
+  off.return_lured = false;  // stop 27's rules change the run; the case is stop 26's
+  off.nudge_parent = false;
   const Metrics quiet = evaluate(off, s, Mode::kTaskAllocation, 10);
   ASSERT_FALSE(quiet.success) << "the case this test is for: a chain that runs out of view";
   EXPECT_EQ(quiet.recruited, 0);
