@@ -556,21 +556,19 @@ Command look_for(const Percept& in, const Params& p, RobotMemory& mem, Vec2 towa
   return drive(p, mem, p.v_align * p.v_max * v, s);
 }
 
-// SUB_NEST (LED blue) waits for its parent to be done (row 11). A parent that moved out of view
-// during its own optimisation 1 (behind an obstacle's corner; the camera's view of a corner need
-// not be mutual) would be waited for for ever: drive toward where it was last seen, at most to
-// d_detect from there, while the child stays in view (R, seek_hidden_reference)
+// SUB_NEST (LED blue) waits for its parent to be done (row 11). The camera's view of a corner need
+// not be mutual, so a parent can be waited for for ever: one that moved out of view during its own
+// optimisation 1 (R, seek_hidden_reference), or one still RED T_nudge ticks on, which sees this
+// robot only from its own side past a corner, if at all, and so never took row 9b (R,
+// nudge_parent). Then drive toward the parent (where it was last seen), at most to d_detect from
+// it, while the child stays in view
 Command wait_for_parent(const Percept& in, const Params& p, RobotMemory& mem) {
   const PfMemory& m = mem.pf;
   const PfState s = PfState::kSubNest;
-  // [R nudge_parent] the parent sees this robot only past a corner from its own side, if at all:
-  // still RED (row 9b not taken) T_nudge ticks on, close in on it until it turns
-  if (p.nudge_parent && m.parent.visible && m.parent.color == Led::kRed &&
-      static_cast<double>(m.t_state) >= p.t_nudge && !lost(m.child, p)) {
-    const Vec2 toward = local_cm(in.pose, m.parent);
-    if (norm(toward) > p.d_detect) return look_for(in, p, mem, toward, s);
-  }
-  if (!p.seek_hidden_reference || !lost(m.parent, p) || lost(m.child, p)) return stop(s);
+  const bool hidden = p.seek_hidden_reference && lost(m.parent, p);
+  const bool blind = p.nudge_parent && m.parent.visible && m.parent.color == Led::kRed &&
+                     static_cast<double>(m.t_state) >= p.t_nudge;
+  if (!(hidden || blind) || lost(m.child, p)) return stop(s);
   const Vec2 toward = local_cm(in.pose, m.parent);
   if (norm(toward) <= p.d_detect) return stop(s);
   return look_for(in, p, mem, toward, s);
