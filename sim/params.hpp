@@ -86,11 +86,13 @@ struct Params {
       false;  ///< forming: back off to the spot d_sub from the target toward the nest (else along the trail)
   bool share_goal = true;  ///< TA: the founder's ACK carries where it saw the goal (relative to the nest)
   bool seek_hidden_reference = true;  ///< aligning: a reference out of view at the start is looked for first
-  bool nudge_parent = true;  ///< SUB_NEST: a parent still RED after T_nudge ticks cannot see this robot (a
-                             ///< corner's view need not be mutual): close in on it until it turns [R]
-  double t_nudge = 100;      ///< nudge_parent: ticks a sub-nest waits for its parent's OPT1 first [ticks]
-  double trail_slack = 45;   ///< forming, retracing its way home: how much farther from the nest than its
-                             ///< target a robot may stop as a subgoal [cm] [R]
+  bool nudge_parent = true;     ///< SUB_NEST: a parent still RED after T_nudge ticks cannot see this robot (a
+                                ///< corner's view need not be mutual): close in on it until it turns [R]
+  double t_nudge = 100;         ///< nudge_parent: ticks a sub-nest waits for its parent's OPT1 first [ticks]
+  bool relink_recovery = true;  ///< SUB_NEST: a parent turned RECOVERY (row 13) is replaced by that robot's
+                                ///< own parent, the light's tag, once in view; till then close in on it [R]
+  double trail_slack = 45;      ///< forming, retracing its way home: how much farther from the nest than its
+                                ///< target a robot may stop as a subgoal [cm] [R]
   bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
   bool single_child = true;      ///< TA: allocated explorers attach only to an unclaimed goal or subgoal [R]
   bool ta_backoff_spot = true;   ///< TA: allocated robots back off to the spot toward the nest [R]

@@ -316,6 +316,8 @@ bool reference_lost(const PfContext& c) {  // row 13, label f
   return (lost(c.m.parent, c.p) || lost(c.m.child, c.p)) && back;
 }
 
+bool heir_in_view(const PfContext& c) { return c.sight.heir != nullptr; }  // row 17 [R]
+
 bool orphaned(const PfContext& c) {  // row 14 option: revert_orphans
   return c.p.revert_orphans && lost(c.m.parent, c.p);
 }
@@ -352,6 +354,10 @@ void grandparent_becomes_parent(const PfContext& c, PfMemory& m) {  // row 15 [R
   m.parent = follow(*c.sight.grandparent, c.in.pose);
 }
 
+void heir_becomes_parent(const PfContext& c, PfMemory& m) {  // row 17 [R]
+  m.parent = follow(*c.sight.heir, c.in.pose);
+}
+
 // row 16 [R]: back to the nest along its way out, then out again to the sighting, the RED robot
 // nearest the nest that it saw (pf_perceive): its next approach to the tip is from the nest side
 void leave_chain(const PfContext&, PfMemory& m) {
@@ -362,7 +368,7 @@ void leave_chain(const PfContext&, PfMemory& m) {
 // clang-format off
 // SPEC §2.3, in its order (paper Table 2 labels where they exist). For each state the first row
 // whose guard holds fires; rows 6, 8, 9 and 13 are split where the SPEC lists two conditions.
-const std::array<PfTransition, 24> kTable{{
+const std::array<PfTransition, 25> kTable{{
   {PfState::kExploring,      found_goal_or_subgoal,        PfState::kSubgoalForming, take_target,           "#1",  "c"},
   {PfState::kExploring,      exploration_time_over,        PfState::kReturnToNest,   nullptr,               "#2",  "b"},
   {PfState::kReturnToNest,   found_on_the_way_home,        PfState::kSubgoalForming, take_target,           "#1h", "c"},
@@ -387,6 +393,7 @@ const std::array<PfTransition, 24> kTable{{
   {PfState::kPathDone,       orphaned,                     PfState::kSubgoal,        nullptr,               "#14b",""},
   {PfState::kSubgoal,        sees_grandparent,             PfState::kSubgoal,        grandparent_becomes_parent, "#15", ""},
   {PfState::kSubgoal,        bypassed,                     PfState::kReturnToNest,   leave_chain,           "#16", ""},
+  {PfState::kSubNest,        heir_in_view,                 PfState::kSubNest,        heir_becomes_parent,   "#17", ""},
 }};
 
 // clang-format on
@@ -560,18 +567,27 @@ Command look_for(const Percept& in, const Params& p, RobotMemory& mem, Vec2 towa
 // not be mutual, so a parent can be waited for for ever: one that moved out of view during its own
 // optimisation 1 (R, seek_hidden_reference), or one still RED T_nudge ticks on, which sees this
 // robot only from its own side past a corner, if at all, and so never took row 9b (R,
-// nudge_parent). Then drive toward the parent (where it was last seen), at most to d_detect from
-// it, while the child stays in view
+// nudge_parent), or one that turned RECOVERY in its alignment (row 13), whose own parent this robot
+// looks for (R, relink_recovery; row 17 takes it). Then drive toward the parent (where it was last
+// seen), at most to d_detect from it, while the child stays in view
 Command wait_for_parent(const Percept& in, const Params& p, RobotMemory& mem) {
   const PfMemory& m = mem.pf;
   const PfState s = PfState::kSubNest;
   const bool hidden = p.seek_hidden_reference && lost(m.parent, p);
   const bool blind = p.nudge_parent && m.parent.visible && m.parent.color == Led::kRed &&
                      static_cast<double>(m.t_state) >= p.t_nudge;
-  if (!(hidden || blind) || lost(m.child, p)) return stop(s);
+  const bool broken = p.relink_recovery && m.parent.visible && m.parent.color == Led::kOrange;
+  // (the child stays in view, save past a broken link: the heir may lie round a corner from both)
+  if (!(hidden || blind || broken) || (!broken && lost(m.child, p))) return stop(s);
   const Vec2 toward = local_cm(in.pose, m.parent);
-  if (norm(toward) <= p.d_detect) return stop(s);
-  return look_for(in, p, mem, toward, s);
+  // (to the edge of a RECOVERY robot's repulsion: its parent stands up to d_sub beyond it)
+  if (norm(toward) <= (broken ? p.r_rec : p.d_detect)) return stop(s);
+  if (!broken) return look_for(in, p, mem, toward, s);
+  // the broken link stands where a reference slipped behind a corner: round it, along the edge
+  const Avoidance avoid = diffusion(in.proximity, p);
+  const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, m.parent.last_seen);
+  const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f;
+  return drive(p, mem, p.v_align * p.v_max * v, s);
 }
 
 // SPEC §2.4: drive to the alignment target P; speed v_align v_max, tapering over the last
@@ -665,6 +681,20 @@ void perceive_bypass(const Percept& in, const Params& p, PfMemory& m, const Clai
   }
 }
 
+// relink_recovery [R]: a parent that turned RECOVERY (row 13) still names its own parent with its
+// light's tag; that robot, in view, is the heir
+void perceive_heir(const Percept& in, const PfMemory& m, PfSight& sight) {
+  if (!m.parent.valid() || !m.parent.visible || m.parent.color != Led::kOrange) return;
+  int heir = kNobody;
+  for (const Blob& b : in.blobs) {
+    if (b.emitter == m.parent.id) heir = b.tag;
+  }
+  if (heir == kNobody || heir == in.id) return;
+  for (const Blob& b : in.blobs) {
+    if (b.emitter == heir && b.color != Led::kOrange) sight.heir = &b;
+  }
+}
+
 }  // namespace
 
 void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfSight& sight) {
@@ -740,6 +770,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   track(m.parent, in, p, false);
   track(m.child, in, p, true);
   if (m.bypass && m.state == PfState::kSubgoal) perceive_bypass(in, p, m, claims, sight);
+  if (p.relink_recovery && m.state == PfState::kSubNest) perceive_heir(in, m, sight);
   // recruit_call [R]: how long this subgoal has gone without a robot forming from it or naming it
   m.unclaimed = m.call_links && m.state == PfState::kSubgoal && !claims.has(in.id) ? m.unclaimed + 1 : 0;
   if (m.target.visible && dist(in.pose.p, m.target.last_seen) / kCm <= p.d_detect) m.target_reached = true;

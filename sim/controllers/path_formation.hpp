@@ -120,6 +120,7 @@ struct PfSight {
   const Blob* guide = nullptr;         ///< follower: the CYAN robot in view fewest hops from the founder
   const Blob* forming_link = nullptr;  ///< seek_tip: the WHITE (forming) robot in view nearest the nest
   const Blob* grandparent = nullptr;   ///< bypass: the parent's parent (RED or the goal) within d_sub + 10 cm
+  const Blob* heir = nullptr;          ///< relink_recovery: the parent is ORANGE; its own parent, in view
   bool bypassed = false;               ///< bypass: every robot that named me now names another, one my parent
   bool recovery_near = false;          ///< an ORANGE robot within r_rec
   bool forming_in_view = false;        ///< a WHITE (subgoal-forming) robot within R_vis

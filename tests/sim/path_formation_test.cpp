@@ -774,6 +774,46 @@ TEST(NudgeParent, ASubNestClosesInOnAParentStillRedAfterTNudge) {
   EXPECT_NEAR(wheels(Led::kRed, 70, late, off), 0.0, 1e-9);
 }
 
+// [R relink_recovery] a SUB_NEST robot whose parent turned RECOVERY (ORANGE, row 13) closes in on it
+// (even with its own child out of view) until it sees the parent's parent, which the RECOVERY
+// robot's light names (its tag); row 17 then makes that robot its parent. Env8, 90 robots, seed 9
+// (paper.toml, TA): the chain stood complete from tick 16 989 and never formed without it
+TEST(RelinkRecovery, ASubNestTakesTheParentOfItsRecoveryParent) {
+  struct Outcome {
+    double wheels;
+    int parent;
+    std::uint8_t row;
+  };
+
+  const auto step = [](double parent_cm, bool heir_seen, Led heir_led, bool child_seen, const Params& p) {
+    RobotMemory mem = sub_nest_for(0);
+    mem.pf.parent.last_seen = {parent_cm / 100.0, 0.0};
+    Reading r;
+    r.add(Led::kOrange, 7, 0, parent_cm, 5);       // the broken link names robot 5
+    if (heir_seen) r.add(heir_led, 5, 40, 90, 3);  // robot 5, beyond it
+    if (child_seen) r.add(Led::kBlue, 12, 180, 70, kMe);
+    const Command cmd = path_formation_step(r.percept(), p, mem);
+    EXPECT_EQ(mem.pf.state, PfState::kSubNest);
+    return Outcome{cmd.left_cm_s + cmd.right_cm_s, mem.pf.parent.id, mem.pf.last_row};
+  };
+  const Params p;
+  const Outcome closing = step(70, false, Led::kRed, true, p);
+  EXPECT_GT(closing.wheels, 0.0);  // forward, toward the ORANGE parent
+  EXPECT_EQ(closing.parent, 7);
+  EXPECT_GT(step(70, false, Led::kRed, false, p).wheels, 0.0);                    // its child out of view too
+  EXPECT_NEAR(step(0.9 * p.r_rec, false, Led::kRed, true, p).wheels, 0.0, 1e-9);  // at the repulsion's edge
+  const Outcome relinked = step(70, true, Led::kRed, true, p);
+  EXPECT_EQ(relinked.parent, 5);
+  EXPECT_EQ(relinked.row, pf_row_number("#17"));
+  EXPECT_EQ(step(70, true, Led::kBrown, true, p).parent, 5);   // optimisation 2's wave: the heir is done
+  EXPECT_EQ(step(70, true, Led::kOrange, true, p).parent, 7);  // a RECOVERY heir is no link
+  Params off = p;
+  off.relink_recovery = false;
+  const Outcome waits = step(70, true, Led::kRed, true, off);
+  EXPECT_NEAR(waits.wheels, 0.0, 1e-9);
+  EXPECT_EQ(waits.parent, 7);
+}
+
 // [R return_lured] a task-allocation scout going home that sees the goal turns to it (then T2 at
 // d_detect); an allocated robot going home, or a scout without the option, keeps to its way home
 TEST(ReturnLured, AScoutGoingHomeTurnsToTheGoalInView) {
