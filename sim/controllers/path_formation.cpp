@@ -564,26 +564,26 @@ Command look_for(const Percept& in, const Params& p, RobotMemory& mem, Vec2 towa
 }
 
 // SUB_NEST (LED blue) waits for its parent to be done (row 11). The camera's view of a corner need
-// not be mutual, so a parent can be waited for for ever: one that moved out of view during its own
-// optimisation 1 (R, seek_hidden_reference), or one still RED T_nudge ticks on, which sees this
-// robot only from its own side past a corner, if at all, and so never took row 9b (R,
-// nudge_parent), or one that turned RECOVERY in its alignment (row 13), whose own parent this robot
-// looks for (R, relink_recovery; row 17 takes it). Then drive toward the parent (where it was last
-// seen), at most to d_detect from it, while the child stays in view
+// not be mutual, so a parent can be waited for for ever: one still RED T_nudge ticks on, which sees
+// this robot only from its own side past a corner, if at all, and so never took row 9b (R,
+// nudge_parent: close in on it while the child stays in view); one out of view, behind a corner
+// (R, seek_hidden_reference); or one that turned RECOVERY in its alignment (row 13), whose own
+// parent this robot looks for (R, relink_recovery; row 17 takes it). For these two, go round the
+// corner toward where the parent was last seen, the child in view or not: under a wall's tip a
+// robot may see neither
 Command wait_for_parent(const Percept& in, const Params& p, RobotMemory& mem) {
   const PfMemory& m = mem.pf;
   const PfState s = PfState::kSubNest;
+  // (the three exclude each other: the parent out of view, in view and RED, in view and ORANGE)
   const bool hidden = p.seek_hidden_reference && lost(m.parent, p);
   const bool blind = p.nudge_parent && m.parent.visible && m.parent.color == Led::kRed &&
                      static_cast<double>(m.t_state) >= p.t_nudge;
   const bool broken = p.relink_recovery && m.parent.visible && m.parent.color == Led::kOrange;
-  // (the child stays in view, save past a broken link: the heir may lie round a corner from both)
-  if (!(hidden || blind || broken) || (!broken && lost(m.child, p))) return stop(s);
+  if (!(hidden || blind || broken) || (blind && lost(m.child, p))) return stop(s);
   const Vec2 toward = local_cm(in.pose, m.parent);
-  // (to the edge of a RECOVERY robot's repulsion: its parent stands up to d_sub beyond it)
+  // (a broken link: to the edge of its repulsion, since its parent stands up to d_sub beyond it)
   if (norm(toward) <= (broken ? p.r_rec : p.d_detect)) return stop(s);
-  if (!broken) return look_for(in, p, mem, toward, s);
-  // the broken link stands where a reference slipped behind a corner: round it, along the edge
+  if (blind) return look_for(in, p, mem, toward, s);
   const Avoidance avoid = diffusion(in.proximity, p);
   const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, m.parent.last_seen);
   const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f;

@@ -814,6 +814,25 @@ TEST(RelinkRecovery, ASubNestTakesTheParentOfItsRecoveryParent) {
   EXPECT_EQ(waits.parent, 7);
 }
 
+// [R seek_hidden_reference] a SUB_NEST robot right under a wall's tip sees neither its parent (done,
+// past the tip) nor its child: it still goes round toward where it last saw the parent (env8, 100
+// robots, seed 6, paper.toml: robot 32 under wall 2's tip waited from tick 22 300 to the end)
+TEST(SeekHiddenReference, ASubNestSeeingNeitherReferenceLooksForItsParent) {
+  const auto wheels = [](const Params& p) {
+    RobotMemory mem = sub_nest_for(500);
+    mem.pf.parent.unseen = static_cast<int>(2 * p.t_lost);
+    mem.pf.child.unseen = static_cast<int>(2 * p.t_lost);
+    const Command cmd = path_formation_step(Reading{}.percept(), p, mem);
+    EXPECT_EQ(mem.pf.state, PfState::kSubNest);
+    return cmd.left_cm_s + cmd.right_cm_s;
+  };
+  const Params p;
+  EXPECT_GT(wheels(p), 0.0);  // the parent's last sighting lies ahead, 70 cm
+  Params off = p;
+  off.seek_hidden_reference = false;
+  EXPECT_NEAR(wheels(off), 0.0, 1e-9);
+}
+
 // [R return_lured] a task-allocation scout going home that sees the goal turns to it (then T2 at
 // d_detect); an allocated robot going home, or a scout without the option, keeps to its way home
 TEST(ReturnLured, AScoutGoingHomeTurnsToTheGoalInView) {
