@@ -121,7 +121,7 @@ struct Params {
   bool recruit_call = true;   ///< TA, rest_recruit: a subgoal nobody has claimed for T_starve ticks calls
                               ///< resting robots over the medium (3 m) [R]
   double t_starve = 600;      ///< TA, recruit_call: ticks unclaimed before a subgoal calls [ticks]
-  double t_founder_wait = 3000;  ///< TA: the founder ends its allocation after this long without a JOIN [R]
+  double t_founder_wait = 300;   ///< TA: the founder ends its allocation after this long without a JOIN [R]
   bool sighting_returns = true;  ///< TA, single_child: nothing free at the sighting -> home [R]
   double t_recruit = 300;  ///< TA, rest_recruit: ticks the free subgoal stays in view first (plus up to as
                            ///< many again, drawn per robot, so that one robot goes) [ticks]

@@ -113,7 +113,8 @@ TEST(Params, TenCmPerSecondGenomeDiffersFromThePaperGenomeOnlyInSpeedAndBackOff)
 
 // the allocation study (docs/CHOICES.md, "Allocating by the founder's trip"): genomes/paper-frugal.toml
 // is the paper genome with t from the founder's trip and delta calibrated for it
-TEST(Params, FrugalGenomeDiffersFromThePaperGenomeOnlyInTheAllocation) {
+// the frugal genome: the allocation (t, delta) and, since stop 29, how soon resting robots are recruited
+TEST(Params, FrugalGenomeDiffersFromThePaperGenomeOnlyInTheAllocationAndRecruiting) {
   const Params paper = load_params(test::source_path("genomes/paper.toml"));
   const Params frugal = load_params(test::source_path("genomes/paper-frugal.toml"));
   EXPECT_EQ(paper.t_source, TSource::kBudget);
@@ -121,9 +122,12 @@ TEST(Params, FrugalGenomeDiffersFromThePaperGenomeOnlyInTheAllocation) {
   EXPECT_LT(frugal.delta_open, paper.delta_open);
   EXPECT_LT(frugal.delta_obstacle, paper.delta_obstacle);
   EXPECT_LT(frugal.delta_complex, paper.delta_complex);
+  EXPECT_LT(frugal.t_starve, paper.t_starve);
+  EXPECT_LT(frugal.t_recruit, paper.t_recruit);
   for (const ParamInfo& info : param_table()) {
     const std::string name(info.name);
-    if (name == "t_source" || name.rfind("delta_", 0) == 0) continue;
+    if (name == "t_source" || name.rfind("delta_", 0) == 0 || name == "T_starve" || name == "T_recruit")
+      continue;
     EXPECT_EQ(get_value(frugal, info), get_value(paper, info)) << info.name;
   }
 }

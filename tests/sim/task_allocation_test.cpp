@@ -557,6 +557,8 @@ TEST(TaRun, ARestingRobotCompletesAChainOneLinkShort) {
   off.sighting_returns = false;
   off.return_lured = false;  // stop 27's rules change the run; the case is stop 25's
   off.nudge_parent = false;
+  off.t_recruit = 300;  // the frugal genome's recruiting before stop 29
+  off.t_starve = 600;
   const Metrics short_one = evaluate(off, s, Mode::kTaskAllocation, 1);
   ASSERT_FALSE(short_one.success) << "the case this test is for: a chain that runs out of robots";
   Params on = off;
