@@ -131,4 +131,8 @@ Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Ve
   return field;
 }
 
+Vec2 with_avoidance(const Percept& in, const Params& p, const NavMemory& nav, Vec2 f) {
+  return (nav.following > 0 ? Vec2{} : diffusion(in.proximity, p).direction) + f;
+}
+
 }  // namespace swarmpath::sim

@@ -63,4 +63,8 @@ Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Ve
 Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest,
               double trap_ticks = -1.0, const Vec2* field_point = nullptr);
 
+/// A navigating robot's heading (robot frame): the navigator's direction `f` plus the proximity ring's
+/// avoidance (diffusion), which edge following leaves out, since it keeps to the edge itself.
+Vec2 with_avoidance(const Percept& in, const Params& p, const NavMemory& nav, Vec2 f);
+
 }  // namespace swarmpath::sim

@@ -109,10 +109,7 @@ void for_each_naming(const Percept& in, F&& f) {
     if (b.emitter < 0 || b.tag == kNobody) continue;
     if (b.color == Led::kRed || (is_path_colour(b.color) && b.color != Led::kOrange)) f(b.emitter, b.tag);
   }
-  for (const RabMessage& r : in.rab) {
-    const int named = claimed_emitter(decode(r.data));
-    if (named != kNobody) f(r.sender, named);
-  }
+  for_each_claim_heard(in.rab, f);
 }
 
 Claims gather_claims(const Percept& in) {
@@ -482,9 +479,8 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
   // R (nest_crowd): robots crowd the nest in task allocation; edge following them is no way out
   const bool in_crowd = sight.nest_distance_cm < m.nest_crowd_cm;
   if (m.to_sighting) {
-    const Avoidance avoid = diffusion(in.proximity, p);
     const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, m.sighting, in_crowd);
-    const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
+    const Vec2 v = with_avoidance(in, p, mem.nav, f) + sight.repulsion;
     if (!m.guide) return drive(p, mem, p.v_max * v, PfState::kExploring);
     Command cmd = drive(p, mem, p.guide_speed * p.v_max * v, PfState::kExploring);
     cmd.led = Led::kCyan;
@@ -513,7 +509,7 @@ Command go_to_nest(const Percept& in, const Params& p, RobotMemory& mem, const P
       sight.goal != nullptr)
     return drive(p, mem, p.v_max * (avoid.direction + sight.goal->dir + sight.repulsion), s);
   const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest);
-  Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
+  const Vec2 v = with_avoidance(in, p, mem.nav, f) + sight.repulsion;
   return drive(p, mem, p.v_max * v, s);
 }
 
@@ -544,14 +540,12 @@ Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const
     const Vec2 to_nest = mem.nest - tgt;
     const double len = norm(to_nest);
     const Vec2 spot_at = len > 0.0 ? tgt + ((p.d_sub + 5.0) * kCm / len) * to_nest : mem.nest;
-    const Avoidance avoid = diffusion(in.proximity, p);
     const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest, 0.25 * p.t_trap, &spot_at);
-    const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
+    const Vec2 v = with_avoidance(in, p, mem.nav, f) + sight.repulsion;
     return drive(p, mem, p.v_max * v, PfState::kSubgoalForming);
   }
-  const Avoidance avoid = diffusion(in.proximity, p);
   const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, mem.pf.target.last_seen);
-  const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f + sight.repulsion;
+  const Vec2 v = with_avoidance(in, p, mem.nav, f) + sight.repulsion;
   return drive(p, mem, p.v_max * v, PfState::kSubgoalForming);
 }
 
@@ -584,9 +578,8 @@ Command wait_for_parent(const Percept& in, const Params& p, RobotMemory& mem) {
   // (a broken link: to the edge of its repulsion, since its parent stands up to d_sub beyond it)
   if (norm(toward) <= (broken ? p.r_rec : p.d_detect)) return stop(s);
   if (blind) return look_for(in, p, mem, toward, s);
-  const Avoidance avoid = diffusion(in.proximity, p);
   const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, m.parent.last_seen);
-  const Vec2 v = (mem.nav.following > 0 ? Vec2{} : avoid.direction) + f;
+  const Vec2 v = with_avoidance(in, p, mem.nav, f);
   return drive(p, mem, p.v_align * p.v_max * v, s);
 }
 
@@ -644,6 +637,14 @@ std::uint8_t pf_row_number(std::string_view row) {
 
 namespace {
 
+// the blob of one emitter this tick (its light's tag names its parent, or its target), if in view
+const Blob* blob_of(const Percept& in, int emitter) {
+  for (const Blob& b : in.blobs) {
+    if (b.emitter == emitter) return &b;
+  }
+  return nullptr;
+}
+
 // chain_bypass [R]: a RED subgoal whose parent's parent (the RED robot the parent's light names, or
 // the goal) is in view within d_sub + 10 cm skips the parent. A RED subgoal leaves the chain once
 // every robot that has named it as parent (its children, by their lights' tags or claims on the
@@ -668,10 +669,8 @@ void perceive_bypass(const Percept& in, const Params& p, PfMemory& m, const Clai
   sight.bypassed = all_renamed && to_parent;
 
   if (!m.parent.valid() || !m.parent.visible) return;
-  int grandparent = kNobody;
-  for (const Blob& b : in.blobs) {
-    if (b.emitter == m.parent.id && b.color == Led::kRed) grandparent = b.tag;
-  }
+  const Blob* parent = blob_of(in, m.parent.id);
+  const int grandparent = parent != nullptr && parent->color == Led::kRed ? parent->tag : kNobody;
   for (const Blob& b : in.blobs) {
     // (not where the grandparent names my parent or me as its own: a loop, not a chain)
     if (grandparent != kNobody && b.emitter == grandparent && b.distance_cm <= p.d_sub + 10.0 &&
@@ -685,10 +684,8 @@ void perceive_bypass(const Percept& in, const Params& p, PfMemory& m, const Clai
 // light's tag; that robot, in view, is the heir
 void perceive_heir(const Percept& in, const PfMemory& m, PfSight& sight) {
   if (!m.parent.valid() || !m.parent.visible || m.parent.color != Led::kOrange) return;
-  int heir = kNobody;
-  for (const Blob& b : in.blobs) {
-    if (b.emitter == m.parent.id) heir = b.tag;
-  }
+  const Blob* parent = blob_of(in, m.parent.id);
+  const int heir = parent != nullptr ? parent->tag : kNobody;
   if (heir == kNobody || heir == in.id) return;
   for (const Blob& b : in.blobs) {
     if (b.emitter == heir && b.color != Led::kOrange) sight.heir = &b;

@@ -117,6 +117,15 @@ TaMessage claim_message(std::uint8_t my_id, int emitter);
 /// The emitter a message claims (claim_message), or kNobody.
 int claimed_emitter(const TaMessage& m);
 
+/// Calls f(sender, emitter) for every claim on the medium this tick (claim_message), whoever sends it.
+template <typename F>
+void for_each_claim_heard(std::span<const RabMessage> inbox, F&& f) {
+  for (const RabMessage& r : inbox) {
+    const int named = claimed_emitter(decode(r.data));
+    if (named != kNobody) f(r.sender, named);
+  }
+}
+
 /// The founder that wins among duplicates: a REQUEST (or ACK) heard from a founder that outranks
 /// `me` (SPEC §2.6 T8); returns its id or kBroadcastId.
 std::uint8_t senior_founder_heard(FounderRank me, std::span<const RabMessage> inbox, bool seniority = false);

@@ -202,10 +202,9 @@ Command drive_to(const Percept& in, const Params& p, RobotMemory& mem, Vec2 poin
   Command cmd;
   cmd.led = led;
   if (100.0 * dist(in.pose.p, point) <= stop_within_cm) return cmd;
-  const Avoidance avoid = diffusion(in.proximity, p);
   const Vec2 f = point == mem.nest ? nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest)
                                    : nav_toward(in, p, mem.nav, mem.rng, point);
-  const Vec2 v = p.v_max * ((mem.nav.following > 0 ? Vec2{} : avoid.direction) + f);
+  const Vec2 v = p.v_max * with_avoidance(in, p, mem.nav, f);
   return drive_command(v, p, mem.turn, led);
 }
 
@@ -238,10 +237,9 @@ Command give_way(const Params& p, RobotMemory& mem) {
 // recruit_call [R]: the nearest subgoal calling for a link that no robot on the medium claims
 const RabMessage* unanswered_call(std::span<const RabMessage> inbox) {
   IdSet claimed;
-  for (const RabMessage& r : inbox) {
-    const int named = claimed_emitter(decode(r.data));
+  for_each_claim_heard(inbox, [&](int, int named) {
     if (named >= 0 && named <= 255) claimed.insert(static_cast<std::uint8_t>(named));
-  }
+  });
   const RabMessage* best = nullptr;
   for (const RabMessage& r : inbox) {
     const TaMessage m = decode(r.data);
