@@ -123,8 +123,11 @@ struct Params {
   double t_starve = 600;      ///< TA, recruit_call: ticks unclaimed before a subgoal calls [ticks]
   double t_founder_wait = 300;   ///< TA: the founder ends its allocation after this long without a JOIN [R]
   bool sighting_returns = true;  ///< TA, single_child: nothing free at the sighting -> home [R]
-  double t_recruit = 300;  ///< TA, rest_recruit: ticks the free subgoal stays in view first (plus up to as
-                           ///< many again, drawn per robot, so that one robot goes) [ticks]
+  bool refound_starved = false;  ///< TA, recruit_call: a chain's end unclaimed for T_refound goes home and
+                                 ///< allocates the robots the rest of the path needs, as a founder [R]
+  double t_refound = 1000;  ///< TA, refound_starved: ticks unclaimed before the chain's end goes home [ticks]
+  double t_recruit = 300;   ///< TA, rest_recruit: ticks the free subgoal stays in view first (plus up to as
+                            ///< many again, drawn per robot, so that one robot goes) [ticks]
 };
 
 enum class ParamType : std::uint8_t { kReal, kInteger, kBool, kChoice };

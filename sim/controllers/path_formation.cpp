@@ -770,6 +770,13 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   if (p.relink_recovery && m.state == PfState::kSubNest) perceive_heir(in, m, sight);
   // recruit_call [R]: how long this subgoal has gone without a robot forming from it or naming it
   m.unclaimed = m.call_links && m.state == PfState::kSubgoal && !claims.has(in.id) ? m.unclaimed + 1 : 0;
+  // refound_starved [R]: its child left to fetch robots; it does not leave itself meanwhile
+  if (p.refound_starved && m.state == PfState::kSubgoal) {
+    for (const RabMessage& r : in.rab) {
+      if (fetch_for(decode(r.data)) == in.id)
+        m.help_until = in.tick + static_cast<std::int64_t>(3.0 * p.t_refound);
+    }
+  }
   if (m.target.visible && dist(in.pose.p, m.target.last_seen) / kCm <= p.d_detect) m.target_reached = true;
   // forming robots that lose their target at least d_sub/2 from it, nearer the nest, go back to
   // the last place they saw it and stop there (row 7a): the chain bends round the obstacle

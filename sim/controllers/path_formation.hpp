@@ -78,10 +78,11 @@ struct PfMemory {
   double nest_crowd_cm = 0;    ///< TA, allocated: no edge following this close to the nest [R]
   bool call_links = false;     ///< TA, allocated with recruit_call: a subgoal long unclaimed calls [R]
   std::int64_t unclaimed = 0;  ///< SUBGOAL: consecutive ticks no robot claimed it (recruit_call)
-  int answering = -1;        ///< recruit_call: the calling subgoal this robot goes to (claimed on the medium)
-  std::int64_t t_state = 0;  ///< ticks in the current state
-  double t_explore = 1000;   ///< T_explore, the exploration budget [ticks]
-  std::int64_t nest_ticks = 0;   ///< consecutive ticks within R_nest_reach while returning (row 3)
+  int answering = -1;  ///< recruit_call: the calling subgoal this robot goes to (claimed on the medium)
+  std::int64_t help_until = 0;  ///< refound_starved: its child went to fetch robots; it stays until this tick
+  std::int64_t t_state = 0;     ///< ticks in the current state
+  double t_explore = 1000;      ///< T_explore, the exploration budget [ticks]
+  std::int64_t nest_ticks = 0;  ///< consecutive ticks within R_nest_reach while returning (row 3)
   bool explore_blocked = false;  ///< edge following found no way farther from the nest (row 2)
   Tracked target;                ///< what the robot backs off from while forming
   bool target_reached = true;    ///< forming: has been within d_detect of the target (row 5 needs it)

@@ -107,18 +107,23 @@ std::uint8_t senior_founder_heard(FounderRank me, std::span<const RabMessage> in
   return best.id == me.id ? kBroadcastId : best.id;
 }
 
-DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox, bool seniority) {
+namespace {
+
+// a decision maker's tick; `resting`: a resting robot's, which hears only founders allocating from
+// the resting robots (kFlagRecall) and no DONE
+DmTick answer_founders(std::uint8_t my_id, std::span<const RabMessage> inbox, bool seniority, bool resting) {
   DmTick out;
   FounderRank founder;
   bool done = false;
   for (const RabMessage& r : inbox) {
     const TaMessage m = decode(r.data);
+    if (resting && !m.recall()) continue;
     if (m.type == MsgType::kAck && m.dest == my_id) {
       out.decision = DmDecision::kGo;
       out.ack = m;
       return out;
     }
-    if (m.type == MsgType::kDone || m.alloc_done()) done = true;
+    if (!resting && (m.type == MsgType::kDone || m.alloc_done())) done = true;
     const FounderRank them{m.allocating(), m.id};
     if (from_founder(m) && outranks(them, founder, seniority)) founder = them;  // unset: id 255
   }
@@ -132,6 +137,30 @@ DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox
     out.send.dest = founder.id;
   }
   return out;
+}
+
+}  // namespace
+
+DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox, bool seniority) {
+  return answer_founders(my_id, inbox, seniority, false);
+}
+
+DmTick resting_tick(std::uint8_t my_id, std::span<const RabMessage> inbox, bool seniority) {
+  return answer_founders(my_id, inbox, seniority, true);
+}
+
+TaMessage fetch_message(std::uint8_t my_id, int parent) {
+  TaMessage m;
+  m.id = my_id;
+  m.state = kFetchState;
+  m.flags = kFlagFetch;
+  m.parent = parent == kGoalEmitter ? kGoalRabId : static_cast<std::uint8_t>(parent);
+  return m;
+}
+
+int fetch_for(const TaMessage& m) {
+  if (!m.fetch() || m.type != MsgType::kNone || m.parent == kBroadcastId) return kNobody;
+  return m.parent == kGoalRabId ? kGoalEmitter : static_cast<int>(m.parent);
 }
 
 TaMessage claim_message(std::uint8_t my_id, int emitter) {

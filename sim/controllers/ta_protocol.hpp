@@ -21,10 +21,15 @@ inline constexpr std::uint8_t kFlagAllocDone = 1;   ///< flags bit 0: the alloca
 inline constexpr std::uint8_t kFlagGoal = 2;        ///< flags bit 1: bytes 10-13 hold the goal [R]
 inline constexpr std::uint8_t kFlagAllocating = 4;  ///< flags bit 2: this founder has ACKed a robot [R]
 inline constexpr std::uint8_t kFlagNeed = 8;  ///< flags bit 3: a subgoal calls for a link (recruit_call) [R]
-inline constexpr int kMaxTaRobots = 254;      ///< ids travel in one byte
+inline constexpr std::uint8_t kFlagRecall =
+    16;  ///< flags bit 4: a founder allocating from the resting robots [R]
+inline constexpr std::uint8_t kFlagFetch = 32;  ///< flags bit 5: a chain's end leaving to fetch robots;
+                                                ///< parent byte: the subgoal it leaves (refound_starved) [R]
+inline constexpr int kMaxTaRobots = 254;  ///< ids travel in one byte
 
 /// SPEC §2.6 framing of the 10-byte payload: 0 id; 1 state; 2 parent id (255 none); 3 flags
-/// (bit 0 ALLOC_DONE; [R] bit 1 goal, bit 2 allocating, bit 3 a subgoal calling for a link); 4 message type;
+/// (bit 0 ALLOC_DONE; [R] bit 1 goal, bit 2 allocating, bit 3 a subgoal calling for a link, bit 4 a founder
+/// allocating from the resting robots, bit 5 a chain's end leaving to fetch robots); 4 message type;
 /// 5 destination id (255 all); 6-7 remaining; 8-9 t_founder/10; and [R] 10-13 the founder's goal sighting
 /// relative to the nest (x, y in cm, signed; flags bit 1).
 struct TaMessage {
@@ -46,6 +51,10 @@ struct TaMessage {
   bool allocating() const { return (flags & kFlagAllocating) != 0; }
 
   bool needs_link() const { return (flags & kFlagNeed) != 0; }
+
+  bool recall() const { return (flags & kFlagRecall) != 0; }
+
+  bool fetch() const { return (flags & kFlagFetch) != 0; }
 };
 
 /// A set of robot ids as they travel on the medium (one byte each).
@@ -108,10 +117,24 @@ bool outranks(FounderRank a, FounderRank b, bool seniority);
 /// ranks first (outranks).
 DmTick decision_maker_tick(std::uint8_t my_id, std::span<const RabMessage> inbox, bool seniority = false);
 
+/// refound_starved [R]: a resting robot's tick. It answers only founders that allocate from the resting
+/// robots (REQUEST or ACK with kFlagRecall): an ACK addressed to it -> go; else JOIN the founder that
+/// ranks first. DONE and the other resting robots' ALLOC_DONE flags do not concern it (it rests anyway).
+DmTick resting_tick(std::uint8_t my_id, std::span<const RabMessage> inbox, bool seniority = false);
+
+/// refound_starved [R]: the message a chain's end sends as it leaves to fetch robots (kFlagFetch, the
+/// subgoal it leaves in the parent byte; not a claim).
+TaMessage fetch_message(std::uint8_t my_id, int parent);
+
+/// The robot a fetch message names (fetch_message), or kNobody.
+int fetch_for(const TaMessage& m);
+
 /// single_child [R]: an allocated robot forming from, or chained to, `emitter` (a robot id or
 /// kGoalEmitter) says so on the medium: parent byte = the robot's id, or kGoalRabId for the goal.
 inline constexpr std::uint8_t kGoalRabId = 254;
 inline constexpr std::uint8_t kClaimState = 3;  ///< state byte of a claim: TaState::kPathFormation (asserted)
+inline constexpr std::uint8_t kFetchState =
+    1;  ///< state byte of a fetch message: TaState::kGoalFounder (asserted)
 TaMessage claim_message(std::uint8_t my_id, int emitter);
 
 /// The emitter a message claims (claim_message), or kNobody.

@@ -14,6 +14,7 @@ namespace swarmpath::sim {
 
 // a claim (single_child) names its sender's state as the TA state it is in
 static_assert(kClaimState == static_cast<std::uint8_t>(TaState::kPathFormation));
+static_assert(kFetchState == static_cast<std::uint8_t>(TaState::kGoalFounder));
 
 std::string_view to_string(TaState s) {
   switch (s) {
@@ -87,7 +88,7 @@ bool senior_founder(const TaContext& c) {  // T8 [R]: duplicate founders
 }
 
 bool late_founder(const TaContext& c) {  // a founder that hears ALLOC_DONE before it allocates
-  return !c.m.protocol_started && c.sight.alloc_done_heard;
+  return !c.m.protocol_started && c.sight.alloc_done_heard && !c.m.refounder;
 }
 
 bool founder_done_and_counts_self(const TaContext& c) {  // T9
@@ -105,6 +106,9 @@ bool chain_end_starved(const TaContext& c) {
   return (c.sight.chain_end != nullptr || c.sight.call != nullptr) && c.m.end_seen > 0 &&
          c.m.end_seen >= c.m.end_wait;
 }
+
+// T12 [R refound_starved]: the chain's end, unclaimed for T_refound, its call unanswered
+bool left_alone(const TaContext& c) { return c.sight.left_alone; }
 
 bool acked(const TaContext& c) { return c.sight.dm.decision == DmDecision::kGo; }  // T5, TA e
 
@@ -178,10 +182,24 @@ void join_chain_end(const TaContext& c, RobotMemory& mem) {
   mem.pf.answering = call.sender;
 }
 
+// T12 [R refound_starved]: leave the chain's end to its parent (told on the way), home, and found
+// the rest of the path there: the place it leaves is where it leads the robots it allocates
+void refound(const TaContext& c, RobotMemory& mem) {
+  TaMemory& m = mem.ta;
+  m.refounder = true;
+  m.left_parent = mem.pf.parent.id;
+  m.protocol_started = false;
+  m.protocol = FounderProtocol{};
+  m.n = 0;
+  mem.pf.sighting = mem.pf.parent.last_seen;
+  mem.pf.has_sighting = true;
+  mem.pf.trip_start = c.in.tick;
+}
+
 // clang-format off
 // SPEC §2.6, in its order; T1 (explore / return / rest) runs inside the scout's path-formation
 // states, T4 (the founder at the nest runs the protocol) inside the founder's behaviour.
-const std::array<TaTransition, 10> kTable{{
+const std::array<TaTransition, 12> kTable{{
   {TaState::kScout,         found_the_goal,               TaState::kGoalFounder,   become_founder,    "T2",  "c"},
   {TaState::kScout,         allocation_over,              TaState::kRestingTask,   nullptr,           "T7",  "d"},
   {TaState::kScout,         learned_of_the_goal,          TaState::kDecisionMaker, nullptr,           "T3",  "f"},
@@ -192,6 +210,8 @@ const std::array<TaTransition, 10> kTable{{
   {TaState::kGoalFounder,   founder_done_and_counts_self, TaState::kPathFormation, founder_initiates, "T9",  "e"},
   {TaState::kGoalFounder,   founder_done,                 TaState::kRestingTask,   nullptr,           "T9r", "d"},
   {TaState::kRestingTask,   chain_end_starved,            TaState::kPathFormation, join_chain_end,    "T10", ""},
+  {TaState::kRestingTask,   acked,                        TaState::kPathFormation, dm_initiates,      "T11", "e"},
+  {TaState::kPathFormation, left_alone,                   TaState::kGoalFounder,   refound,           "T12", ""},
 }};
 
 // clang-format on
@@ -307,6 +327,13 @@ void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaS
     sight.chain_end = free_subgoal_in_view(in);
     if (sight.chain_end == nullptr && p.recruit_call) sight.call = unanswered_call(in.rab);
   }
+  // a resting robot answers only a second allocation (refound_starved, T11), at its deployment point
+  if (mem.ta.state == TaState::kRestingTask)
+    sight.dm = p.refound_starved && mem.ta.arrived ? resting_tick(id, in.rab, p.founder_seniority) : DmTick{};
+  const PfMemory& pf = mem.pf;
+  sight.left_alone = p.refound_starved && mem.ta.state == TaState::kPathFormation && pf.call_links &&
+                     pf.state == PfState::kSubgoal && pf.parent.valid() &&
+                     static_cast<double>(pf.unclaimed) >= p.t_refound && in.tick >= pf.help_until;
 }
 
 const TaTransition* ta_transition(const TaContext& c, RobotMemory& mem) {
@@ -358,6 +385,12 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
       cmd = drive_to(in, p, mem, mem.nest, p.founder_wait * p.r_nest_reach, Led::kCyan);
       if (at_nest && !m.protocol_started) {
         m.protocol_started = true;
+        // refound_starved: n from the trip home (Eq. 1-3 with t its time, whatever t_source says)
+        if (m.refounder) {
+          m.t_founder_s = static_cast<double>(in.tick - mem.pf.trip_start) / 10.0;
+          m.n = robots_needed(m.t_founder_s, p.v_max, p.r_vis, delta_for(p, mem.env_class),
+                              static_cast<int>(p.n_min), swarm);
+        }
         m.protocol = start_founder(m.n - (p.founder_counts_self ? 1 : 0));
       }
       if (m.protocol_started) {
@@ -372,11 +405,14 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
           msg.goal_x_cm = static_cast<std::int16_t>(std::clamp(std::round(rel.x), -32767.0, 32767.0));
           msg.goal_y_cm = static_cast<std::int16_t>(std::clamp(std::round(rel.y), -32767.0, 32767.0));
         }
+        if (m.refounder) msg.flags = static_cast<std::uint8_t>(msg.flags | kFlagRecall);
         if (msg.type == MsgType::kDone && m.protocol.done_ticks == 1) {
           m.alloc_done_tick = in.tick;
           m.allocated = m.protocol.acks + (p.founder_counts_self ? 1 : 0);
         }
         cmd = say(cmd, msg);
+      } else if (m.refounder) {
+        cmd = say(cmd, fetch_message(id, m.left_parent));
       }
       break;
     case TaState::kDecisionMaker:
@@ -390,7 +426,8 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
       cmd = m.give_way > 0 ? give_way(p, mem) : drive_to(in, p, mem, mem.start, p.d_arrive, Led::kBlack);
       m.arrived = m.arrived || 100.0 * dist(in.pose.p, mem.start) <= p.d_arrive;
       watch_for_pressing(in, p, mem);
-      cmd = say(cmd, alloc_done_flag(id, m.state));
+      // refound_starved: JOIN a founder allocating from the resting robots (T11)
+      cmd = say(cmd, sight.dm.send.type == MsgType::kJoin ? sight.dm.send : alloc_done_flag(id, m.state));
       break;
   }
   mem.state = static_cast<std::uint8_t>(static_cast<int>(m.state) * 16 + static_cast<int>(mem.pf.state));

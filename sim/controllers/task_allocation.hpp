@@ -55,6 +55,9 @@ struct TaMemory {
   std::int64_t end_seen = 0;  ///< rest_recruit [R]: consecutive ticks a chain's end has been in view
   std::int64_t end_wait = 0;  ///< rest_recruit: ticks it waits before joining (T_recruit + a draw)
   bool hears_calls = false;   ///< recruit_call: listens to the medium while resting [R]
+  // refound_starved [R]: a chain's end gone home to allocate the rest of the path's robots
+  bool refounder = false;
+  int left_parent = kNobody;  ///< the subgoal it left (told with fetch messages on its way)
   std::uint8_t last_row = 0;  ///< the TA table row that fired last (index + 1)
   std::int64_t fired_tick = -1;
 };
@@ -71,6 +74,7 @@ struct TaSight {
   DmTick dm;                                   ///< the decision maker's reading of the inbox
   const Blob* chain_end = nullptr;   ///< rest_recruit, resting at its deployment point: a free RED subgoal
   const RabMessage* call = nullptr;  ///< recruit_call: the nearest subgoal calling for a link, unanswered
+  bool left_alone = false;           ///< refound_starved: a chain's end unclaimed for T_refound
   double nest_distance_cm = 0;
 };
 

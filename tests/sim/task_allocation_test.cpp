@@ -68,6 +68,15 @@ std::string fire(RobotMemory& mem, const Reading& r, const Params& p = {}, int s
   return row ? std::string(row->row) : std::string();
 }
 
+// what a resting robot says every tick: the allocation is over
+TaMessage alloc_done_flag_of(std::uint8_t id) {
+  TaMessage m;
+  m.id = id;
+  m.state = static_cast<std::uint8_t>(TaState::kRestingTask);
+  m.flags = kFlagAllocDone;
+  return m;
+}
+
 TaMessage message(std::uint8_t id, MsgType type, std::uint8_t dest = kBroadcastId) {
   TaMessage m;
   m.id = id;
@@ -389,6 +398,121 @@ TEST(TaTable, T10NoAnswerToACallAlreadyAnsweredNorWithoutTheFlagNorWhenOff) {
   RobotMemory pushed_off = resting_at_home();  // only from its own deployment point
   pushed_off.start = {0.0, 0.5};
   EXPECT_EQ(ticks_to_join(pushed_off, call_heard(), p, limit), -1);
+}
+
+// T11/T12 [R refound_starved]: a chain's end left alone goes home and allocates the rest of the path
+Params refounding() {
+  Params p;
+  p.refound_starved = true;
+  return p;
+}
+
+TaMessage recall(MsgType type, std::uint8_t dest = kBroadcastId) {
+  TaMessage m = message(30, type, dest);
+  m.flags = static_cast<std::uint8_t>(m.flags | kFlagRecall);
+  return m;
+}
+
+TEST(TaTable, T11ARestingRobotAnswersASecondAllocationOnly) {
+  const Params p = refounding();
+  {  // a founder allocating from the resting robots: JOIN it, and go once ACKed
+    RobotMemory mem = resting_at_home();
+    Reading r;
+    r.hear(recall(MsgType::kRequest));
+    r.hear(alloc_done_flag_of(12));  // its resting neighbours' ALLOC_DONE does not send it to rest
+    const Reading heard = r;
+    const Command cmd = task_allocation_step(heard.percept(), p, mem, 100);
+    EXPECT_EQ(mem.ta.state, TaState::kRestingTask);
+    ASSERT_TRUE(cmd.rab_send);
+    const TaMessage join = decode(cmd.rab);
+    EXPECT_EQ(join.type, MsgType::kJoin);
+    EXPECT_EQ(join.dest, 30);
+    Reading acked;
+    acked.hear(recall(MsgType::kAck, kMe));
+    EXPECT_EQ(fire(mem, acked, p), "T11");
+    EXPECT_EQ(mem.ta.state, TaState::kPathFormation);
+  }
+  {  // the first allocation's REQUEST and ACK (no recall flag) are not for resting robots
+    RobotMemory mem = resting_at_home();
+    Reading r;
+    r.hear(message(30, MsgType::kAck, kMe));
+    EXPECT_EQ(fire(mem, r, p), "");
+    const Command cmd = task_allocation_step(r.percept(), p, mem, 100);
+    EXPECT_NE(decode(cmd.rab).type, MsgType::kJoin);
+  }
+  {  // off: no second allocation
+    RobotMemory mem = resting_at_home();
+    Reading r;
+    r.hear(recall(MsgType::kAck, kMe));
+    EXPECT_EQ(fire(mem, r, Params{}), "");
+  }
+}
+
+// a chain's end: a RED subgoal whose parent, robot 19, stands 70 cm east, unclaimed for `unclaimed`
+RobotMemory chain_end(std::int64_t unclaimed) {
+  RobotMemory mem = robot(TaState::kPathFormation);
+  mem.pf.state = PfState::kSubgoal;
+  mem.pf.call_links = true;
+  mem.pf.parent.id = 19;
+  mem.pf.parent.last_seen = {0.7, 0.0};
+  mem.pf.parent.visible = true;
+  mem.pf.unclaimed = unclaimed;
+  return mem;
+}
+
+TEST(TaTable, T12AChainEndLeftAloneGoesHomeToFoundTheRestOfThePath) {
+  const Params p = refounding();
+  const auto t_refound = static_cast<std::int64_t>(p.t_refound);
+  RobotMemory early = chain_end(t_refound - 1);
+  EXPECT_EQ(fire(early, {}, p), "");
+  RobotMemory off = chain_end(t_refound);
+  EXPECT_EQ(fire(off, {}, Params{}), "");
+  RobotMemory waiting = chain_end(t_refound);  // its child went to fetch robots: it stays
+  waiting.pf.help_until = 501;
+  EXPECT_EQ(fire(waiting, {}, p), "");
+
+  RobotMemory mem = chain_end(t_refound);
+  ASSERT_EQ(fire(mem, {}, p), "T12");
+  EXPECT_EQ(mem.ta.state, TaState::kGoalFounder);
+  EXPECT_TRUE(mem.ta.refounder);
+  EXPECT_TRUE(mem.pf.has_sighting);  // it will lead the robots back to its parent
+  EXPECT_EQ(mem.pf.sighting, (Vec2{0.7, 0.0}));
+  // on its way it tells its parent, which then stays for 3 T_refound
+  Reading heard;  // the alloc_done flags of resting robots do not make it a late founder (T7f)
+  heard.hear(alloc_done_flag_of(12));
+  Percept in = heard.percept();
+  in.tick += 1;
+  const Command cmd = task_allocation_step(in, p, mem, 100);
+  EXPECT_EQ(mem.ta.state, TaState::kGoalFounder);
+  ASSERT_TRUE(cmd.rab_send);
+  EXPECT_EQ(fetch_for(decode(cmd.rab)), 19);
+  EXPECT_EQ(claimed_emitter(decode(cmd.rab)), kNobody);  // not a claim: explorers may form from 19
+
+  RobotMemory parent = chain_end(0);
+  parent.pf.single_child = true;
+  Reading told;
+  told.hear(fetch_message(40, kMe));
+  Percept at = told.percept();
+  path_formation_step(at, p, parent);
+  EXPECT_EQ(parent.pf.help_until, at.tick + 3 * t_refound);
+}
+
+TEST(TaTable, T12TheChainEndCountsNFromItsTripHome) {  // Eq. (1)-(3) with t its trip home
+  const Params p = refounding();
+  RobotMemory mem = robot(TaState::kGoalFounder);
+  mem.ta.refounder = true;
+  Reading r;
+  r.at = kNest + Vec2{0.5, 0.0};  // at the nest, within founder_wait R_nest_reach
+  Percept in = r.percept();
+  mem.pf.trip_start = in.tick - 300;  // 30 s home: l = 20 cm/s x 30 s = 600 cm, n = 600/100 + delta
+  const Command cmd = task_allocation_step(in, p, mem, 100);
+  EXPECT_TRUE(mem.ta.protocol_started);
+  EXPECT_EQ(mem.ta.n, static_cast<int>(std::ceil(6.0 + p.delta_open)));
+  EXPECT_EQ(mem.ta.protocol.remaining, mem.ta.n - 1);  // it counts itself
+  ASSERT_TRUE(cmd.rab_send);
+  const TaMessage req = decode(cmd.rab);
+  EXPECT_EQ(req.type, MsgType::kRequest);
+  EXPECT_TRUE(req.recall());
 }
 
 TEST(TaTable, EveryRowHasAGuardAndALabelledSpecRow) {
