@@ -25,7 +25,7 @@ inline constexpr std::uint8_t kFlagRecall =
     16;  ///< flags bit 4: a founder allocating from the resting robots [R]
 inline constexpr std::uint8_t kFlagFetch = 32;  ///< flags bit 5: a chain's end leaving to fetch robots;
                                                 ///< parent byte: the subgoal it leaves (refound_starved) [R]
-inline constexpr int kMaxTaRobots = 254;  ///< ids travel in one byte
+inline constexpr int kMaxTaRobots = 254;        ///< ids travel in one byte
 
 /// SPEC §2.6 framing of the 10-byte payload: 0 id; 1 state; 2 parent id (255 none); 3 flags
 /// (bit 0 ALLOC_DONE; [R] bit 1 goal, bit 2 allocating, bit 3 a subgoal calling for a link, bit 4 a founder

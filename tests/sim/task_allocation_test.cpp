@@ -719,6 +719,30 @@ TEST(TaRun, AChainEndOutOfViewCallsTheRestingRobotsItNeeds) {
   EXPECT_EQ(m.allocated, quiet.allocated + m.recruited);
 }
 
+// refound_starved [R]: with delta_open 0 the frugal genome allocates 9 robots in env2 (60 robots,
+// seed 1); the chain runs out 4.2 m from the resting robots, beyond the call's 3 m, and waits. With
+// refound_starved its end goes home, allocates the rest of the path from the resting robots and
+// leads them back (screen: stop 31, docs/CHOICES.md).
+TEST(TaRun, AChainEndOutOfCallRangeFetchesTheRobotsItNeeds) {
+  const Scenario s = with_max_ticks(
+      with_robots(load_scenario(test::source_path("configs/scenarios/paper/env2.toml")), 60), 15000);
+  Params off = load_params(test::source_path("genomes/paper-frugal.toml"));
+  off.delta_open = 0;
+  const Metrics quiet = evaluate(off, s, Mode::kTaskAllocation, 1);
+  ASSERT_FALSE(quiet.success) << "the case this test is for: a chain that runs out beyond the call";
+  EXPECT_EQ(quiet.recruited, 0);
+  Params on = off;
+  on.refound_starved = true;
+  on.t_refound = 1000;
+  const auto refounder = [](const RobotMemory& r) -> std::uint8_t { return r.ta.refounder ? 1 : 0; };
+  Metrics m;
+  const int refounders = robots_with(flags_ever(on, s, 1, refounder, m), 1);
+  EXPECT_TRUE(m.success) << "no path after " << m.ticks << " ticks";
+  EXPECT_GE(refounders, 1);
+  EXPECT_GT(m.allocated, quiet.allocated);
+  EXPECT_LE(m.allocated, 30);  // the rest of the path, not the resting crowd
+}
+
 // SPEC §4.3: N_alloc counts every robot that initiated the task. env1, 70 robots, seed 3 has four
 // founders; the first to finish its protocol allocated 1 robot, the others the rest of the swarm,
 // so the first founder's own count would report a resource reduction of 97 % for a run that used
