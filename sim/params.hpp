@@ -126,8 +126,9 @@ struct Params {
   bool refound_starved = false;  ///< TA, recruit_call: a chain's end unclaimed for T_refound goes home and
                                  ///< allocates the robots the rest of the path needs, as a founder [R]
   double t_refound = 1000;  ///< TA, refound_starved: ticks unclaimed before the chain's end goes home [ticks]
-  double t_recruit = 300;   ///< TA, rest_recruit: ticks the free subgoal stays in view first (plus up to as
-                            ///< many again, drawn per robot, so that one robot goes) [ticks]
+  double delta_refound = 0;  ///< TA, refound_starved: the delta of Eq. (3) for the rest of the path [robots]
+  double t_recruit = 300;    ///< TA, rest_recruit: ticks the free subgoal stays in view first (plus up to as
+                             ///< many again, drawn per robot, so that one robot goes) [ticks]
 };
 
 enum class ParamType : std::uint8_t { kReal, kInteger, kBool, kChoice };

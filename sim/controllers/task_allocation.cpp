@@ -385,11 +385,12 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
       cmd = drive_to(in, p, mem, mem.nest, p.founder_wait * p.r_nest_reach, Led::kCyan);
       if (at_nest && !m.protocol_started) {
         m.protocol_started = true;
-        // refound_starved: n from the trip home (Eq. 1-3 with t its time, whatever t_source says)
+        // refound_starved: n from the trip home (Eq. 1-3 with t its time, whatever t_source says, and
+        // delta_refound)
         if (m.refounder) {
           m.t_founder_s = static_cast<double>(in.tick - mem.pf.trip_start) / 10.0;
-          m.n = robots_needed(m.t_founder_s, p.v_max, p.r_vis, delta_for(p, mem.env_class),
-                              static_cast<int>(p.n_min), swarm);
+          m.n = robots_needed(m.t_founder_s, p.v_max, p.r_vis, p.delta_refound, static_cast<int>(p.n_min),
+                              swarm);
         }
         m.protocol = start_founder(m.n - (p.founder_counts_self ? 1 : 0));
       }

@@ -504,10 +504,12 @@ TEST(TaTable, T12TheChainEndCountsNFromItsTripHome) {  // Eq. (1)-(3) with t its
   Reading r;
   r.at = kNest + Vec2{0.5, 0.0};  // at the nest, within founder_wait R_nest_reach
   Percept in = r.percept();
-  mem.pf.trip_start = in.tick - 300;  // 30 s home: l = 20 cm/s x 30 s = 600 cm, n = 600/100 + delta
-  const Command cmd = task_allocation_step(in, p, mem, 100);
+  mem.pf.trip_start = in.tick - 300;  // 30 s home: l = 20 cm/s x 30 s = 600 cm, n = 600/100 + delta_refound
+  Params q = p;
+  q.delta_refound = 2;
+  const Command cmd = task_allocation_step(in, q, mem, 100);
   EXPECT_TRUE(mem.ta.protocol_started);
-  EXPECT_EQ(mem.ta.n, static_cast<int>(std::ceil(6.0 + p.delta_open)));
+  EXPECT_EQ(mem.ta.n, 8);
   EXPECT_EQ(mem.ta.protocol.remaining, mem.ta.n - 1);  // it counts itself
   ASSERT_TRUE(cmd.rab_send);
   const TaMessage req = decode(cmd.rab);
