@@ -132,5 +132,26 @@ TEST(Params, FrugalGenomeDiffersFromThePaperGenomeOnlyInTheAllocationAndRecruiti
   }
 }
 
+// stop 31 (docs/CHOICES.md): genomes/paper-refound.toml is the paper genome with delta 0 / 0 / 0, the
+// frugal genome's quick recruiting, and the second allocation of a chain's end that ran out
+TEST(Params, RefoundGenomeDiffersFromThePaperGenomeOnlyInTheAllocationAndRecruiting) {
+  const Params paper = load_params(test::source_path("genomes/paper.toml"));
+  const Params refound = load_params(test::source_path("genomes/paper-refound.toml"));
+  const Params frugal = load_params(test::source_path("genomes/paper-frugal.toml"));
+  EXPECT_EQ(refound.t_source, paper.t_source);
+  EXPECT_EQ(refound.delta_open + refound.delta_obstacle + refound.delta_complex, 0.0);
+  EXPECT_EQ(refound.t_starve, frugal.t_starve);
+  EXPECT_EQ(refound.t_recruit, frugal.t_recruit);
+  EXPECT_FALSE(paper.refound_starved);
+  EXPECT_TRUE(refound.refound_starved);
+  for (const ParamInfo& info : param_table()) {
+    const std::string name(info.name);
+    if (name.rfind("delta_", 0) == 0 || name == "T_starve" || name == "T_recruit" ||
+        name == "refound_starved" || name == "T_refound")
+      continue;
+    EXPECT_EQ(get_value(refound, info), get_value(paper, info)) << info.name;
+  }
+}
+
 }  // namespace
 }  // namespace swarmpath::sim
