@@ -149,32 +149,35 @@ DmTick resting_tick(std::uint8_t my_id, std::span<const RabMessage> inbox, bool 
   return answer_founders(my_id, inbox, seniority, true);
 }
 
-TaMessage fetch_message(std::uint8_t my_id, int parent) {
+namespace {
+
+// a message naming a robot or the goal in its parent byte (a claim, a fetch)
+TaMessage naming(std::uint8_t my_id, std::uint8_t state, int emitter) {
   TaMessage m;
   m.id = my_id;
-  m.state = kFetchState;
-  m.flags = kFlagFetch;
-  m.parent = parent == kGoalEmitter ? kGoalRabId : static_cast<std::uint8_t>(parent);
-  return m;
-}
-
-int fetch_for(const TaMessage& m) {
-  if (!m.fetch() || m.type != MsgType::kNone || m.parent == kBroadcastId) return kNobody;
-  return m.parent == kGoalRabId ? kGoalEmitter : static_cast<int>(m.parent);
-}
-
-TaMessage claim_message(std::uint8_t my_id, int emitter) {
-  TaMessage m;
-  m.id = my_id;
-  m.state = kClaimState;
+  m.state = state;
   m.parent = emitter == kGoalEmitter ? kGoalRabId : static_cast<std::uint8_t>(emitter);
   return m;
 }
 
-int claimed_emitter(const TaMessage& m) {
-  if (m.state != kClaimState || m.type != MsgType::kNone || m.parent == kBroadcastId) return kNobody;
+int named_emitter(const TaMessage& m) {
+  if (m.type != MsgType::kNone || m.parent == kBroadcastId) return kNobody;
   return m.parent == kGoalRabId ? kGoalEmitter : static_cast<int>(m.parent);
 }
+
+}  // namespace
+
+TaMessage claim_message(std::uint8_t my_id, int emitter) { return naming(my_id, kClaimState, emitter); }
+
+int claimed_emitter(const TaMessage& m) { return m.state == kClaimState ? named_emitter(m) : kNobody; }
+
+TaMessage fetch_message(std::uint8_t my_id, int parent) {
+  TaMessage m = naming(my_id, kFetchState, parent);
+  m.flags = kFlagFetch;
+  return m;
+}
+
+int fetch_for(const TaMessage& m) { return m.fetch() && m.state == kFetchState ? named_emitter(m) : kNobody; }
 
 int robots_needed(double t_seconds, double speed_cm_s, double r_vis_cm, double delta, int n_min, int swarm) {
   const double l = speed_cm_s * t_seconds;                       // Eq. (1)

@@ -21,11 +21,12 @@ inline constexpr std::uint8_t kFlagAllocDone = 1;   ///< flags bit 0: the alloca
 inline constexpr std::uint8_t kFlagGoal = 2;        ///< flags bit 1: bytes 10-13 hold the goal [R]
 inline constexpr std::uint8_t kFlagAllocating = 4;  ///< flags bit 2: this founder has ACKed a robot [R]
 inline constexpr std::uint8_t kFlagNeed = 8;  ///< flags bit 3: a subgoal calls for a link (recruit_call) [R]
-inline constexpr std::uint8_t kFlagRecall =
-    16;  ///< flags bit 4: a founder allocating from the resting robots [R]
-inline constexpr std::uint8_t kFlagFetch = 32;  ///< flags bit 5: a chain's end leaving to fetch robots;
-                                                ///< parent byte: the subgoal it leaves (refound_starved) [R]
-inline constexpr int kMaxTaRobots = 254;        ///< ids travel in one byte
+/// flags bit 4: a founder allocating from the resting robots (refound_starved) [R]
+inline constexpr std::uint8_t kFlagRecall = 16;
+/// flags bit 5: a chain's end leaving to fetch robots; parent byte: the subgoal it leaves (refound_starved)
+/// [R]
+inline constexpr std::uint8_t kFlagFetch = 32;
+inline constexpr int kMaxTaRobots = 254;  ///< ids travel in one byte
 
 /// SPEC §2.6 framing of the 10-byte payload: 0 id; 1 state; 2 parent id (255 none); 3 flags
 /// (bit 0 ALLOC_DONE; [R] bit 1 goal, bit 2 allocating, bit 3 a subgoal calling for a link, bit 4 a founder
@@ -133,8 +134,8 @@ int fetch_for(const TaMessage& m);
 /// kGoalEmitter) says so on the medium: parent byte = the robot's id, or kGoalRabId for the goal.
 inline constexpr std::uint8_t kGoalRabId = 254;
 inline constexpr std::uint8_t kClaimState = 3;  ///< state byte of a claim: TaState::kPathFormation (asserted)
-inline constexpr std::uint8_t kFetchState =
-    1;  ///< state byte of a fetch message: TaState::kGoalFounder (asserted)
+/// state byte of a fetch message: TaState::kGoalFounder (asserted)
+inline constexpr std::uint8_t kFetchState = 1;
 TaMessage claim_message(std::uint8_t my_id, int emitter);
 
 /// The emitter a message claims (claim_message), or kNobody.
