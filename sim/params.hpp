@@ -94,11 +94,20 @@ struct Params {
   double trail_slack = 45;      ///< forming, retracing its way home: how much farther from the nest than its
                                 ///< target a robot may stop as a subgoal [cm] [R]
   bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
-  bool single_child = true;      ///< TA: allocated explorers attach only to an unclaimed goal or subgoal [R]
-  bool ta_backoff_spot = true;   ///< TA: allocated robots back off to the spot toward the nest [R]
-  double give_way = 20;          ///< TA: a resting robot pressed by another backs away this many ticks, then
-                                 ///< returns (0: never) [R]
-  double depart_gap = 50;        ///< TA: ticks between departures, in ACK order (0: all at once) [R]
+  /// forming, backing off to the spot: ticks without progress toward it, no wall in the way, before it
+  /// retraces its trail (0: T_trap/4 always, before stop 32) [R]
+  double spot_patience = 300;
+  /// forming: the spot is the crumb of its own way out d_sub + 5 cm (within this tolerance) from the
+  /// target, nearer the nest (0: the straight spot) [cm] [R]
+  double spot_crumb_tol = 15;
+  /// forming, retracing its trail from the spot's way: from the crumb nearest it among those nearer the
+  /// nest than the target [R]
+  bool trail_nestward = true;
+  bool single_child = true;     ///< TA: allocated explorers attach only to an unclaimed goal or subgoal [R]
+  bool ta_backoff_spot = true;  ///< TA: allocated robots back off to the spot toward the nest [R]
+  double give_way = 20;         ///< TA: a resting robot pressed by another backs away this many ticks, then
+                                ///< returns (0: never) [R]
+  double depart_gap = 50;       ///< TA: ticks between departures, in ACK order (0: all at once) [R]
   bool seek_tip = true;   ///< TA: an allocated explorer that sees a robot forming a subgoal and no free one
                           ///< waits beside it for the free subgoal it becomes [R]
   double tip_hover = 50;  ///< TA, seek_tip: distance at which it waits by the forming robot [cm]

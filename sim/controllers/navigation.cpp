@@ -83,7 +83,7 @@ Vec2 follow_edge(const Percept& in, int side) {
 }
 
 Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest,
-              double trap_ticks, const Vec2* field_point) {
+              double trap_ticks, const Vec2* field_point, double trail_within) {
   const double trap = trap_ticks > 0.0 ? trap_ticks : p.t_trap;
   // trapped by the field with a trail to retrace: switch to the trail for the rest of the way
   // (checked one tick ahead of nav_update, which would start edge following at T_trap)
@@ -91,7 +91,7 @@ Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trai
   if (!nav.on_trail && nav.following == 0 && !trail.empty() && p.t_trap > 0 &&
       static_cast<double>(nav.stalled) + 1.0 >= trap) {
     nav.on_trail = true;
-    trail.start_home(in.pose.p);
+    trail.start_home_within(in.pose.p, nest, trail_within);
     nav.stalled = 0;
     nav.best = -1e18;
   }
@@ -129,6 +129,21 @@ Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Ve
     return follow_edge(in, nav.side);
   }
   return field;
+}
+
+bool wall_in_the_way(const Percept& in, Vec2 toward) {
+  const double cos_cone = std::cos(deg2rad(35.0));  // a blob this close to a sensor's axis explains it
+  constexpr double kRobotNear = 30.0;               // [cm]
+  const auto& dirs = proximity_directions();
+  for (std::size_t k = 0; k < kProximityCount; ++k) {
+    if (in.proximity[k] <= 0.0 || dot(dirs[k], toward) <= 0.0) continue;
+    bool robot = false;
+    for (const Blob& b : in.blobs) {
+      if (b.emitter >= 0 && b.distance_cm <= kRobotNear && dot(b.dir, dirs[k]) >= cos_cone) robot = true;
+    }
+    if (!robot) return true;
+  }
+  return false;
 }
 
 Vec2 with_avoidance(const Percept& in, const Params& p, const NavMemory& nav, Vec2 f) {

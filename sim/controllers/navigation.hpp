@@ -61,7 +61,11 @@ Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Ve
 /// `trap_ticks` (default T_trap) is how long the field may make no progress before the trail;
 /// the field pulls toward `field_point` (default: the nest itself).
 Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest,
-              double trap_ticks = -1.0, const Vec2* field_point = nullptr);
+              double trap_ticks = -1.0, const Vec2* field_point = nullptr, double trail_within = 1e18);
+
+/// Something that is not a lit robot (a wall, an obstacle, a resting robot) on a proximity sensor
+/// within 90 degrees of `toward` (robot frame): no camera blob within 30 cm in that sensor's direction.
+bool wall_in_the_way(const Percept& in, Vec2 toward);
 
 /// A navigating robot's heading (robot frame): the navigator's direction `f` plus the proximity ring's
 /// avoidance (diffusion), which edge following leaves out, since it keeps to the edge itself.

@@ -513,6 +513,21 @@ Command go_to_nest(const Percept& in, const Params& p, RobotMemory& mem, const P
   return drive(p, mem, p.v_max * v, s);
 }
 
+// The spot a forming robot backs off to from its target `tgt`: d_sub + 5 cm from it toward the nest,
+// or [R spot_crumb_tol] the crumb of its own way out nearest that distance from it (within the
+// tolerance) among those nearer the nest than the target.
+Vec2 backoff_spot_at(const Params& p, const RobotMemory& mem, Vec2 tgt) {
+  const double r = (p.d_sub + 5.0) * kCm;
+  if (p.spot_crumb_tol > 0.0) {
+    Vec2 crumb;
+    if (mem.trail.crumb_at(tgt, r, p.spot_crumb_tol * kCm, mem.nest, dist(tgt, mem.nest), crumb))
+      return crumb;
+  }
+  const Vec2 to_nest = mem.nest - tgt;
+  const double len = norm(to_nest);
+  return len > 0.0 ? tgt + (r / len) * to_nest : mem.nest;
+}
+
 // SUBGOAL_FORMING (LED white): back off toward the nest from the target; a robot that re-targeted
 // to a subgoal nearer the nest first walks to it (the chain's tip), then backs off from there
 Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
@@ -534,13 +549,17 @@ Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const
   }
   if (mem.pf.target_reached) {
     // back off to the nest side of the target: the point d_sub (+5 cm) from it toward the nest,
-    // "in between the starting point and the detected subgoal"; once the field stalls (a quarter
-    // of T_trap), along the robot's own way from the nest, a route it knows is passable
+    // "in between the starting point and the detected subgoal" [R spot_crumb_tol: the point of the
+    // robot's own way out that far from it, nearer the nest: round an obstacle, the way it knows
+    // is passable]. Without progress toward it for spot_patience ticks, or a quarter of T_trap with
+    // a wall in the way, along its own way from the nest [R trail_nestward: from the point of that
+    // way nearest it that is nearer the nest than the target, not back past the target]
     const Vec2 tgt = mem.pf.target.last_seen;
-    const Vec2 to_nest = mem.nest - tgt;
-    const double len = norm(to_nest);
-    const Vec2 spot_at = len > 0.0 ? tgt + ((p.d_sub + 5.0) * kCm / len) * to_nest : mem.nest;
-    const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest, 0.25 * p.t_trap, &spot_at);
+    const Vec2 spot_at = backoff_spot_at(p, mem, tgt);
+    const bool wall = wall_in_the_way(in, in.pose.to_local(spot_at - in.pose.p));
+    const double patience = p.spot_patience > 0.0 && !wall ? p.spot_patience : 0.25 * p.t_trap;
+    const double trail_within = p.trail_nestward ? dist(tgt, mem.nest) : 1e18;
+    const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest, patience, &spot_at, trail_within);
     const Vec2 v = with_avoidance(in, p, mem.nav, f) + sight.repulsion;
     return drive(p, mem, p.v_max * v, PfState::kSubgoalForming);
   }

@@ -2,6 +2,7 @@
 #include "trail.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace swarmpath::sim {
 
@@ -90,6 +91,42 @@ void Trail::start_home(Vec2 p) {
   }
   count_ = best + 1;  // the crumbs after it stay in the array for fall_back
   home_from_ = count_;
+}
+
+void Trail::start_home_within(Vec2 p, Vec2 nest, double within) {
+  int best = -1;
+  double best_d = 1e18;
+  for (int i = 0; i < count_; ++i) {
+    const Vec2 c = crumbs_[static_cast<std::size_t>(i)];
+    if (dist(c, nest) >= within) continue;
+    const double d = dist(p, c);
+    if (d < best_d) {
+      best_d = d;
+      best = i;
+    }
+  }
+  if (best < 0) {
+    start_home(p);
+    return;
+  }
+  count_ = best + 1;
+  home_from_ = count_;
+}
+
+bool Trail::crumb_at(Vec2 from, double r, double tol, Vec2 nest, double within, Vec2& out) const {
+  double best = tol;
+  bool found = false;
+  for (int i = 0; i < count_; ++i) {
+    const Vec2 c = crumbs_[static_cast<std::size_t>(i)];
+    if (dist(c, nest) >= within) continue;
+    const double dev = std::abs(dist(c, from) - r);
+    if (dev <= best) {
+      best = dev;
+      out = c;
+      found = true;
+    }
+  }
+  return found;
 }
 
 bool Trail::fall_back() {

@@ -33,6 +33,9 @@ class Trail {
   /// trail, or beside it).
   void start_home(Vec2 p);
 
+  /// As start_home, among the crumbs within `within` of `nest` only (all when none is).
+  void start_home_within(Vec2 p, Vec2 nest, double within);
+
   /// The crumb nearest the robot may lie behind a wall from it: goes back to the crumb nearest home
   /// that the robot has been at (the trail's end, or one it touched since the trail's last crumb)
   /// and home from there. False when that is no farther from home than where it is going now, or
@@ -46,6 +49,10 @@ class Trail {
   void skip() {
     if (count_ > 0) --count_;
   }
+
+  /// The crumb whose distance from `from` is nearest `r` (within `tol`) among those nearer `nest` than
+  /// `within`; false when none is.
+  bool crumb_at(Vec2 from, double r, double tol, Vec2 nest, double within, Vec2& out) const;
 
   bool empty() const { return count_ == 0; }
 

@@ -671,6 +671,31 @@ TEST(TaRun, OneChainNoSideBranches) {
       << "side branches: " << red_fan << " RED for a path of " << f.path_robots;
 }
 
+// R spot_patience, spot_crumb_tol, trail_nestward (stop 32, docs/CHOICES.md). A forming robot that
+// turned round among the robots at the chain's tip gained less than trap_progress (30 cm) in T_trap/4
+// (25 ticks) and fell back to its trail, which for a robot that reached the tip from the goal side
+// leads back past the target: its link stood beside its parent, not toward the nest. Env1, 100
+// robots, seed 1, genomes/paper-refound.toml: 25 links in a knot 1 m wide round x = 3 m before
+// stop 32; with the patient, straight back-off 15 for a 10 m path.
+TEST(TaRun, LinksStepTowardTheNestNotSideways) {
+  const Scenario s = env1_with(100);
+  const Params p = load_params(test::source_path("genomes/paper-refound.toml"));
+  Metrics m;
+  const int red = allocated_ever_in_chain(p, s, 1, m);
+  ASSERT_TRUE(m.success);
+  Params before = p;
+  before.spot_patience = 0;
+  before.spot_crumb_tol = 0;
+  before.trail_nestward = false;
+  Metrics b;
+  const int red_before = allocated_ever_in_chain(before, s, 1, b);
+  ASSERT_TRUE(b.success);
+  // 10 m at d_sub = 70 cm: 15 links; the knot cost ten more
+  EXPECT_LE(red, 17) << red << " RED robots for a 10 m path";
+  EXPECT_GE(red_before, red + 8) << "before: " << red_before << ", now " << red;
+  EXPECT_LT(m.ticks_to_chain, b.ticks_to_chain);
+}
+
 // R rest_recruit (docs/CHOICES.md). With the frugal allocation (genomes/paper-frugal.toml) env1,
 // 60 robots, seed 1 allocates 19 robots; its chain bends and ends one link short, its nest-most RED
 // robot 1.2 m from the nest beacon beside the resting robots, and waits there to the end. A resting
@@ -685,6 +710,9 @@ TEST(TaRun, ARestingRobotCompletesAChainOneLinkShort) {
   off.nudge_parent = false;
   off.t_recruit = 300;  // the frugal genome's recruiting before stop 29
   off.t_starve = 600;
+  off.spot_patience = 0;  // stop 32's back-off lays a straighter chain that does not run out here
+  off.spot_crumb_tol = 0;
+  off.trail_nestward = false;
   const Metrics short_one = evaluate(off, s, Mode::kTaskAllocation, 1);
   ASSERT_FALSE(short_one.success) << "the case this test is for: a chain that runs out of robots";
   Params on = off;
@@ -709,6 +737,9 @@ TEST(TaRun, AChainEndOutOfViewCallsTheRestingRobotsItNeeds) {
   off.sighting_returns = false;
   off.return_lured = false;  // stop 27's rules change the run; the case is stop 26's
   off.nudge_parent = false;
+  off.spot_patience = 0;  // stop 32's back-off lays a straighter chain that does not run out here
+  off.spot_crumb_tol = 0;
+  off.trail_nestward = false;
   const Metrics quiet = evaluate(off, s, Mode::kTaskAllocation, 10);
   ASSERT_FALSE(quiet.success) << "the case this test is for: a chain that runs out of view";
   EXPECT_EQ(quiet.recruited, 0);
@@ -800,7 +831,8 @@ TEST(Determinism, GoldenHashTaskAllocationShortChain) {
   // stop 24: trails that never join two sides of a wall, return_finds (the goal), 1853 -> 2080
   // stop 24: skip_blocked_crumbs (a robot going home passes over a crumb it cannot reach), -> 1854
   // stop 26: sighting_returns (an allocated robot with nothing free at its sighting goes home), -> 1683
-  constexpr std::uint64_t kExpected = 0xc8bd481fde690461ULL;  // complete: 1683 ticks, 20 allocated
+  // stop 32: spot_patience, spot_crumb_tol, trail_nestward (links toward the nest, not sideways), -> 1057
+  constexpr std::uint64_t kExpected = 0x2b67c87f753c9497ULL;  // complete: 1057 ticks, 20 allocated
   Params p;
   p.delta_open = 5;  // SPEC §2.7's default, so that some of the 20 robots rest
   const Metrics m = evaluate(p, with_max_ticks(short_chain(), 20000), Mode::kTaskAllocation, 1);

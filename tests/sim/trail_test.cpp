@@ -113,5 +113,43 @@ TEST(Trail, ARobotSentAcrossAWallFallsBackToACrumbItHasBeenAt) {
   EXPECT_GT(d.y, 1.9);
 }
 
+// stop 32 (spot_crumb_tol): the spot a forming robot backs off to is the crumb of its way out
+// d_sub + 5 cm from its target, among those nearer the nest than the target; trail_nestward: the way
+// home from the tip starts at the nearest such crumb, not at one on the leg back from the goal.
+// Nest at (0, 0); the robot walked east to (4, 0.5), past the tip at (3, 0), on to (4, -0.5)
+// and back west to the tip.
+Trail past_the_tip() {
+  Trail t;
+  t.reset({0.0, 0.0});
+  walk(t, {0.0, 0.0}, {2.0, 0.0});
+  walk(t, {2.0, 0.0}, {4.0, 0.5});
+  walk(t, {4.0, 0.5}, {4.0, -0.5});
+  walk(t, {4.0, -0.5}, {3.1, -0.1});
+  return t;
+}
+
+TEST(Trail, TheSpotIsTheCrumbOfTheWayOutAtTheLinkLengthNearerTheNest) {
+  const Trail t = past_the_tip();
+  const Vec2 tip{3.0, 0.0};
+  const Vec2 nest{0.0, 0.0};
+  Vec2 c{};
+  ASSERT_TRUE(t.crumb_at(tip, 0.75, 0.15, nest, dist(tip, nest), c));
+  EXPECT_NEAR(dist(c, tip), 0.75, 0.15);
+  EXPECT_LT(c.x, tip.x) << "a crumb on the goal side: (" << c.x << ", " << c.y << ")";
+  // no crumb within 1 cm of 3 m from the tip nearer the nest: none
+  EXPECT_FALSE(t.crumb_at(tip, 3.5, 0.01, nest, dist(tip, nest), c));
+}
+
+TEST(Trail, TheWayHomeFromTheTipStartsNearerTheNestThanTheTip) {
+  const Vec2 at{3.1, -0.1};
+  const Vec2 tip{3.0, 0.0};
+  Trail t = past_the_tip();
+  t.start_home(at);  // the nearest crumb: on the leg back from the goal side
+  EXPECT_GT(first_crumb(t, at).x, tip.x);
+  Trail u = past_the_tip();
+  u.start_home_within(at, {0.0, 0.0}, dist(tip, Vec2{0.0, 0.0}));
+  EXPECT_LT(first_crumb(u, at).x, tip.x);
+}
+
 }  // namespace
 }  // namespace swarmpath::sim
