@@ -52,6 +52,10 @@ void ta_init(RobotMemory& mem, const Params& p) {
 
 namespace {
 
+// the controller's clock: SPEC §1.2's 10 ticks per second (t of Eq. (1) is in seconds)
+constexpr double kTicksPerSecond = 10.0;
+double seconds(double ticks) { return ticks / kTicksPerSecond; }
+
 bool is_path_robot_colour(const Blob& b) {  // SPEC §2.6 T7
   if (b.emitter < 0) return false;          // the nest beacon is blue too
   switch (b.color) {
@@ -123,7 +127,7 @@ void become_founder(const TaContext& c, RobotMemory& mem) {
   const double t_ticks = c.p.t_source == TSource::kBudget
                              ? mem.pf.t_explore
                              : static_cast<double>(c.in.tick - mem.pf.trip_start);
-  mem.ta.t_founder_s = t_ticks / 10.0;
+  mem.ta.t_founder_s = seconds(t_ticks);
   mem.ta.n = robots_needed(mem.ta.t_founder_s, c.p.v_max, c.p.r_vis, delta_for(c.p, mem.env_class),
                            static_cast<int>(c.p.n_min), c.swarm);
 }
@@ -132,7 +136,7 @@ void become_founder(const TaContext& c, RobotMemory& mem) {
 void start_path_formation(const TaContext& c, RobotMemory& mem, double t_founder_s) {
   const PfMemory keep = mem.pf;  // the founder keeps its sighting of the goal (site fidelity)
   pf_init(mem.pf, c.p);
-  mem.pf.t_explore = std::max(1.0, c.p.kappa * t_founder_s * 10.0);
+  mem.pf.t_explore = std::max(1.0, c.p.kappa * t_founder_s * kTicksPerSecond);
   mem.pf.sighting = keep.sighting;
   mem.pf.has_sighting = keep.has_sighting;
   mem.pf.to_sighting = c.p.site_fidelity && keep.has_sighting;
@@ -169,7 +173,7 @@ void dm_initiates(const TaContext& c, RobotMemory& mem) {
 
 // T10 [R rest_recruit]: path formation, forming the next link from the chain's end in view
 void join_chain_end(const TaContext& c, RobotMemory& mem) {
-  start_path_formation(c, mem, mem.pf.t_explore / 10.0);
+  start_path_formation(c, mem, seconds(mem.pf.t_explore));
   if (c.sight.chain_end != nullptr) {
     pf_join_chain_end(mem.pf, c.p, *c.sight.chain_end, c.in.pose, mem.nest, c.in.tick);
     return;
@@ -388,7 +392,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
         // refound_starved: n from the trip home (Eq. 1-3 with t its time, whatever t_source says, and
         // delta_refound)
         if (m.refounder) {
-          m.t_founder_s = static_cast<double>(in.tick - mem.pf.trip_start) / 10.0;
+          m.t_founder_s = seconds(static_cast<double>(in.tick - mem.pf.trip_start));
           m.n = robots_needed(m.t_founder_s, p.v_max, p.r_vis, p.delta_refound, static_cast<int>(p.n_min),
                               swarm);
         }
