@@ -54,6 +54,7 @@ namespace {
 
 // the controller's clock: SPEC §1.2's 10 ticks per second (t of Eq. (1) is in seconds)
 constexpr double kTicksPerSecond = 10.0;
+
 double seconds(double ticks) { return ticks / kTicksPerSecond; }
 
 bool is_path_robot_colour(const Blob& b) {  // SPEC §2.6 T7

@@ -7,8 +7,9 @@
 namespace swarmpath::sim {
 
 namespace {
-constexpr double kSpacing = 0.25;  // [m] between crumbs
-constexpr double kNear = 0.25;     // [m] under a 30 cm wall plus two robot radii (47 cm)
+constexpr double kSpacing = 0.25;      // [m] between crumbs
+constexpr double kNear = 0.25;         // [m] under a 30 cm wall plus two robot radii (47 cm)
+constexpr double kEverywhere = 1e300;  // [m] a `within` that every crumb is
 
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
@@ -79,21 +80,7 @@ double Trail::remaining(Vec2 p) const {
   return len;
 }
 
-void Trail::start_home(Vec2 p) {
-  int best = -1;
-  double best_d = 1e18;
-  for (int i = 0; i < count_; ++i) {
-    const double d = dist(p, crumbs_[static_cast<std::size_t>(i)]);
-    if (d < best_d) {
-      best_d = d;
-      best = i;
-    }
-  }
-  count_ = best + 1;  // the crumbs after it stay in the array for fall_back
-  home_from_ = count_;
-}
-
-void Trail::start_home_within(Vec2 p, Vec2 nest, double within) {
+int Trail::nearest_crumb(Vec2 p, Vec2 nest, double within) const {
   int best = -1;
   double best_d = 1e18;
   for (int i = 0; i < count_; ++i) {
@@ -105,6 +92,16 @@ void Trail::start_home_within(Vec2 p, Vec2 nest, double within) {
       best = i;
     }
   }
+  return best;
+}
+
+void Trail::start_home(Vec2 p) {
+  count_ = nearest_crumb(p, p, kEverywhere) + 1;  // the crumbs after it stay in the array for fall_back
+  home_from_ = count_;
+}
+
+void Trail::start_home_within(Vec2 p, Vec2 nest, double within) {
+  const int best = nearest_crumb(p, nest, within);
   if (best < 0) {
     start_home(p);
     return;

@@ -64,6 +64,9 @@ class Trail {
  private:
   void thin();
 
+  // the index of the crumb nearest `p` among those within `within` of `nest` (-1: none)
+  int nearest_crumb(Vec2 p, Vec2 nest, double within) const;
+
   std::array<Vec2, kCapacity> crumbs_{};
   int count_ = 0;
   int reached_ = 0;    // the crumb nearest home that the robot has been at since the last record
