@@ -61,7 +61,8 @@ Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Ve
 /// `trap_ticks` (default T_trap) is how long the field may make no progress before the trail;
 /// the field pulls toward `field_point` (default: the nest itself).
 Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest,
-              double trap_ticks = -1.0, const Vec2* field_point = nullptr, double trail_within = 1e18);
+              double trap_ticks = -1.0, const Vec2* field_point = nullptr,
+              double trail_within = Trail::kEverywhere);
 
 /// Something that is not a lit robot (a wall, an obstacle, a resting robot) on a proximity sensor
 /// within 90 degrees of `toward` (robot frame): no camera blob within 30 cm in that sensor's direction.

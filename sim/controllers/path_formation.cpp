@@ -558,7 +558,7 @@ Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const
     const Vec2 spot_at = backoff_spot_at(p, mem, tgt);
     const bool wall = wall_in_the_way(in, in.pose.to_local(spot_at - in.pose.p));
     const double patience = p.spot_patience > 0.0 && !wall ? p.spot_patience : 0.25 * p.t_trap;
-    const double trail_within = p.trail_nestward ? dist(tgt, mem.nest) : 1e18;
+    const double trail_within = p.trail_nestward ? dist(tgt, mem.nest) : Trail::kEverywhere;
     const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest, patience, &spot_at, trail_within);
     const Vec2 v = with_avoidance(in, p, mem.nav, f) + sight.repulsion;
     return drive(p, mem, p.v_max * v, PfState::kSubgoalForming);

@@ -7,9 +7,8 @@
 namespace swarmpath::sim {
 
 namespace {
-constexpr double kSpacing = 0.25;      // [m] between crumbs
-constexpr double kNear = 0.25;         // [m] under a 30 cm wall plus two robot radii (47 cm)
-constexpr double kEverywhere = 1e300;  // [m] a `within` that every crumb is
+constexpr double kSpacing = 0.25;  // [m] between crumbs
+constexpr double kNear = 0.25;     // [m] under a 30 cm wall plus two robot radii (47 cm)
 
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;

@@ -14,6 +14,7 @@ namespace swarmpath::sim {
 class Trail {
  public:
   static constexpr int kCapacity = 128;
+  static constexpr double kEverywhere = 1e300;  ///< [m] a `within` that every crumb is
 
   /// Starts a new trail at `start`.
   void reset(Vec2 start);
