@@ -58,9 +58,9 @@ struct Params {
   double r_keep = 90;           ///< 31: max distance kept to each reference [cm]
   bool revert_orphans = false;  ///< 32: SUB_NEST/PATH_DONE revert to RED when the parent is lost
   // task allocation (SPEC §2.6, §2.7)
-  double delta_open = 25;               ///< 33: delta for open environments [robots]
-  double delta_obstacle = 35;           ///< 34: delta for obstacle environments [robots]
-  double delta_complex = 35;            ///< 35: delta for complex environments [robots]
+  double delta_open = 0;                ///< 33: delta for open environments [robots]
+  double delta_obstacle = 0;            ///< 34: delta for obstacle environments [robots]
+  double delta_complex = 0;             ///< 35: delta for complex environments [robots]
   TSource t_source = TSource::kBudget;  ///< 36: t in l = s*t
   double kappa = 1.2;                   ///< 37: allocated robots' budget = kappa * t_founder
   double n_min = 2;                     ///< 38: lower clamp on n [robots]
@@ -129,14 +129,14 @@ struct Params {
                               ///< RED subgoal) for T_recruit ticks joins it as the next link [R]
   bool recruit_call = true;   ///< TA, rest_recruit: a subgoal nobody has claimed for T_starve ticks calls
                               ///< resting robots over the medium (3 m) [R]
-  double t_starve = 600;      ///< TA, recruit_call: ticks unclaimed before a subgoal calls [ticks]
+  double t_starve = 50;       ///< TA, recruit_call: ticks unclaimed before a subgoal calls [ticks]
   double t_founder_wait = 300;   ///< TA: the founder ends its allocation after this long without a JOIN [R]
   bool sighting_returns = true;  ///< TA, single_child: nothing free at the sighting -> home [R]
-  bool refound_starved = false;  ///< TA, recruit_call: a chain's end unclaimed for T_refound goes home and
+  bool refound_starved = true;   ///< TA, recruit_call: a chain's end unclaimed for T_refound goes home and
                                  ///< allocates the robots the rest of the path needs, as a founder [R]
-  double t_refound = 1000;  ///< TA, refound_starved: ticks unclaimed before the chain's end goes home [ticks]
+  double t_refound = 1500;  ///< TA, refound_starved: ticks unclaimed before the chain's end goes home [ticks]
   double delta_refound = 0;  ///< TA, refound_starved: the delta of Eq. (3) for the rest of the path [robots]
-  double t_recruit = 300;    ///< TA, rest_recruit: ticks the free subgoal stays in view first (plus up to as
+  double t_recruit = 50;     ///< TA, rest_recruit: ticks the free subgoal stays in view first (plus up to as
                              ///< many again, drawn per robot, so that one robot goes) [ticks]
 };
 

@@ -111,45 +111,49 @@ TEST(Params, TenCmPerSecondGenomeDiffersFromThePaperGenomeOnlyInSpeedAndBackOff)
   }
 }
 
-// the allocation study (docs/CHOICES.md, "Allocating by the founder's trip"): genomes/paper-frugal.toml
-// is the paper genome with t from the founder's trip and delta calibrated for it
-// the frugal genome: the allocation (t, delta) and, since stop 29, how soon resting robots are recruited
-TEST(Params, FrugalGenomeDiffersFromThePaperGenomeOnlyInTheAllocationAndRecruiting) {
+// stop 33 (docs/CHOICES.md): genomes/paper-single.toml (genomes/paper.toml until stop 32) is the paper
+// genome with the paper's single allocation: delta 25 / 35 / 35, the slower recruiting of stops 25-28,
+// and no second allocation of a chain's end that ran out
+TEST(Params, SingleAllocationGenomeDiffersFromThePaperGenomeOnlyInTheAllocationAndRecruiting) {
   const Params paper = load_params(test::source_path("genomes/paper.toml"));
+  const Params single = load_params(test::source_path("genomes/paper-single.toml"));
+  EXPECT_EQ(paper.delta_open + paper.delta_obstacle + paper.delta_complex, 0.0);
+  EXPECT_EQ(single.delta_open, 25.0);
+  EXPECT_EQ(single.delta_obstacle, 35.0);
+  EXPECT_EQ(single.delta_complex, 35.0);
+  EXPECT_LT(paper.t_starve, single.t_starve);
+  EXPECT_LT(paper.t_recruit, single.t_recruit);
+  EXPECT_TRUE(paper.refound_starved);
+  EXPECT_FALSE(single.refound_starved);
+  for (const ParamInfo& info : param_table()) {
+    const std::string name(info.name);
+    if (name.rfind("delta_", 0) == 0 || name == "T_starve" || name == "T_recruit" ||
+        name == "refound_starved")
+      continue;
+    EXPECT_EQ(get_value(single, info), get_value(paper, info)) << info.name;
+  }
+}
+
+// the allocation study (docs/CHOICES.md, "Allocating by the founder's trip"): genomes/paper-frugal.toml
+// is the single-allocation genome with t from the founder's trip and delta calibrated for it, and,
+// since stop 29, resting robots recruited as quickly as in genomes/paper.toml
+TEST(Params, FrugalGenomeDiffersFromTheSingleAllocationGenomeOnlyInTheAllocationAndRecruiting) {
+  const Params paper = load_params(test::source_path("genomes/paper.toml"));
+  const Params single = load_params(test::source_path("genomes/paper-single.toml"));
   const Params frugal = load_params(test::source_path("genomes/paper-frugal.toml"));
-  EXPECT_EQ(paper.t_source, TSource::kBudget);
+  EXPECT_EQ(single.t_source, TSource::kBudget);
   EXPECT_EQ(frugal.t_source, TSource::kElapsed);
-  EXPECT_LT(frugal.delta_open, paper.delta_open);
-  EXPECT_LT(frugal.delta_obstacle, paper.delta_obstacle);
-  EXPECT_LT(frugal.delta_complex, paper.delta_complex);
-  EXPECT_LT(frugal.t_starve, paper.t_starve);
-  EXPECT_LT(frugal.t_recruit, paper.t_recruit);
+  EXPECT_LT(frugal.delta_open, single.delta_open);
+  EXPECT_LT(frugal.delta_obstacle, single.delta_obstacle);
+  EXPECT_LT(frugal.delta_complex, single.delta_complex);
+  EXPECT_EQ(frugal.t_starve, paper.t_starve);
+  EXPECT_EQ(frugal.t_recruit, paper.t_recruit);
+  EXPECT_FALSE(frugal.refound_starved);
   for (const ParamInfo& info : param_table()) {
     const std::string name(info.name);
     if (name == "t_source" || name.rfind("delta_", 0) == 0 || name == "T_starve" || name == "T_recruit")
       continue;
-    EXPECT_EQ(get_value(frugal, info), get_value(paper, info)) << info.name;
-  }
-}
-
-// stop 31 (docs/CHOICES.md): genomes/paper-refound.toml is the paper genome with delta 0 / 0 / 0, the
-// frugal genome's quick recruiting, and the second allocation of a chain's end that ran out
-TEST(Params, RefoundGenomeDiffersFromThePaperGenomeOnlyInTheAllocationAndRecruiting) {
-  const Params paper = load_params(test::source_path("genomes/paper.toml"));
-  const Params refound = load_params(test::source_path("genomes/paper-refound.toml"));
-  const Params frugal = load_params(test::source_path("genomes/paper-frugal.toml"));
-  EXPECT_EQ(refound.t_source, paper.t_source);
-  EXPECT_EQ(refound.delta_open + refound.delta_obstacle + refound.delta_complex, 0.0);
-  EXPECT_EQ(refound.t_starve, frugal.t_starve);
-  EXPECT_EQ(refound.t_recruit, frugal.t_recruit);
-  EXPECT_FALSE(paper.refound_starved);
-  EXPECT_TRUE(refound.refound_starved);
-  for (const ParamInfo& info : param_table()) {
-    const std::string name(info.name);
-    if (name.rfind("delta_", 0) == 0 || name == "T_starve" || name == "T_recruit" ||
-        name == "refound_starved" || name == "T_refound")
-      continue;
-    EXPECT_EQ(get_value(refound, info), get_value(paper, info)) << info.name;
+    EXPECT_EQ(get_value(frugal, info), get_value(single, info)) << info.name;
   }
 }
 

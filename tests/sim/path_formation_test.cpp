@@ -777,7 +777,8 @@ TEST(NudgeParent, ASubNestClosesInOnAParentStillRedAfterTNudge) {
 // [R relink_recovery] a SUB_NEST robot whose parent turned RECOVERY (ORANGE, row 13) closes in on it
 // (even with its own child out of view) until it sees the parent's parent, which the RECOVERY
 // robot's light names (its tag); row 17 then makes that robot its parent. Env8, 90 robots, seed 9
-// (paper.toml, TA): the chain stood complete from tick 16 989 and never formed without it
+// (paper.toml then, now paper-single.toml; TA): the chain stood complete from tick 16 989 and never formed
+// without it
 TEST(RelinkRecovery, ASubNestTakesTheParentOfItsRecoveryParent) {
   struct Outcome {
     double wheels;
@@ -816,7 +817,8 @@ TEST(RelinkRecovery, ASubNestTakesTheParentOfItsRecoveryParent) {
 
 // [R seek_hidden_reference] a SUB_NEST robot right under a wall's tip sees neither its parent (done,
 // past the tip) nor its child: it still goes round toward where it last saw the parent (env8, 100
-// robots, seed 6, paper.toml: robot 32 under wall 2's tip waited from tick 22 300 to the end)
+// robots, seed 6, paper.toml then, now paper-single.toml: robot 32 under wall 2's tip waited from tick 22 300
+// to the end)
 TEST(SeekHiddenReference, ASubNestSeeingNeitherReferenceLooksForItsParent) {
   const auto wheels = [](const Params& p) {
     RobotMemory mem = sub_nest_for(500);

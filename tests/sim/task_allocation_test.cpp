@@ -403,7 +403,13 @@ TEST(TaTable, T10NoAnswerToACallAlreadyAnsweredNorWithoutTheFlagNorWhenOff) {
 // T11/T12 [R refound_starved]: a chain's end left alone goes home and allocates the rest of the path
 Params refounding() {
   Params p;
-  p.refound_starved = true;
+  p.refound_starved = true;  // the default since stop 33
+  return p;
+}
+
+Params single_allocation() {  // genomes/paper-single.toml's reading: no second allocation
+  Params p;
+  p.refound_starved = false;
   return p;
 }
 
@@ -444,7 +450,7 @@ TEST(TaTable, T11ARestingRobotAnswersASecondAllocationOnly) {
     RobotMemory mem = resting_at_home();
     Reading r;
     r.hear(recall(MsgType::kAck, kMe));
-    EXPECT_EQ(fire(mem, r, Params{}), "");
+    EXPECT_EQ(fire(mem, r, single_allocation()), "");
   }
 }
 
@@ -466,7 +472,7 @@ TEST(TaTable, T12AChainEndLeftAloneGoesHomeToFoundTheRestOfThePath) {
   RobotMemory early = chain_end(t_refound - 1);
   EXPECT_EQ(fire(early, {}, p), "");
   RobotMemory off = chain_end(t_refound);
-  EXPECT_EQ(fire(off, {}, Params{}), "");
+  EXPECT_EQ(fire(off, {}, single_allocation()), "");
   RobotMemory waiting = chain_end(t_refound);  // its child went to fetch robots: it stays
   waiting.pf.help_until = 501;
   EXPECT_EQ(fire(waiting, {}, p), "");
@@ -526,7 +532,7 @@ TEST(TaTable, EveryRowHasAGuardAndALabelledSpecRow) {
 
 TEST(TaAllocation, CountForAKnownTAndDelta) {  // SPEC §2.7 worked example
   // t = the founder's minimum exploring time, 1500 ticks = 150 s; s = 10 cm/s; v = R_vis = 100 cm
-  // with SPEC §2.7's delta defaults (5 / 15 / 20; genomes/paper.toml carries calibrated ones) and
+  // with SPEC §2.7's delta defaults (5 / 15 / 20; genomes/paper.toml carries calibrated ones, 0 / 0 / 0) and
   // the worked example's s = 10 cm/s (the default is 20, docs/CHOICES.md "Robot speed")
   Params spec;
   spec.v_max = 10;
@@ -652,7 +658,7 @@ int allocated_ever_in_chain(const Params& p, const Scenario& s, std::uint64_t se
 // the path (17 for 17).
 TEST(TaRun, OneChainNoSideBranches) {
   const Scenario s = env1_with(60);
-  const Params p = load_params(test::source_path("genomes/paper.toml"));
+  const Params p = load_params(test::source_path("genomes/paper-single.toml"));
   ASSERT_TRUE(p.single_child && p.ta_backoff_spot && p.depart_gap > 0);
   Metrics m;
   const int red = allocated_ever_in_chain(p, s, 2, m);
@@ -675,11 +681,11 @@ TEST(TaRun, OneChainNoSideBranches) {
 // turned round among the robots at the chain's tip gained less than trap_progress (30 cm) in T_trap/4
 // (25 ticks) and fell back to its trail, which for a robot that reached the tip from the goal side
 // leads back past the target: its link stood beside its parent, not toward the nest. Env1, 100
-// robots, seed 1, genomes/paper-refound.toml: 25 links in a knot 1 m wide round x = 3 m before
-// stop 32; with the patient, straight back-off 15 for a 10 m path.
+// robots, seed 1, genomes/paper.toml (then paper-refound.toml): 25 links in a knot 1 m wide round x = 3 m
+// before stop 32; with the patient, straight back-off 15 for a 10 m path.
 TEST(TaRun, LinksStepTowardTheNestNotSideways) {
   const Scenario s = env1_with(100);
-  const Params p = load_params(test::source_path("genomes/paper-refound.toml"));
+  const Params p = load_params(test::source_path("genomes/paper.toml"));
   Metrics m;
   const int red = allocated_ever_in_chain(p, s, 1, m);
   ASSERT_TRUE(m.success);
@@ -782,7 +788,7 @@ TEST(TaRun, AChainEndOutOfCallRangeFetchesTheRobotsItNeeds) {
 // all 70 robots.
 TEST(TaRun, AllocatedCountsTheRobotsOfEveryFounder) {
   const Scenario s = env1_with(70);
-  const Params p = load_params(test::source_path("genomes/paper.toml"));
+  const Params p = load_params(test::source_path("genomes/paper-single.toml"));
   constexpr std::uint8_t kInitiated = 1;
   constexpr std::uint8_t kFounder = 2;
   const auto roles = [](const RobotMemory& r) -> std::uint8_t {
@@ -803,7 +809,7 @@ TEST(TaRun, AllocatedCountsTheRobotsOfEveryFounder) {
 // deferring to the founder that is already allocating, the run allocates that founder's n.
 TEST(TaRun, ALateFounderDefersToTheOneAlreadyAllocating) {
   const Scenario s = env1_with(70);
-  const Params p = load_params(test::source_path("genomes/paper.toml"));
+  const Params p = load_params(test::source_path("genomes/paper-single.toml"));
   ASSERT_TRUE(p.founder_seniority);
   const auto allocated_and_n = [&](const Params& q) {
     int n = 0;
