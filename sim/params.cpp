@@ -70,6 +70,7 @@ const std::array kTable{
   ParamInfo{ 0, "w_seek",         R, &P::w_seek,         1.0,  0,    3,     0.05, "",    "",      "pull of an explorer toward the goal or RED light it sees (0: none)", {}},
   ParamInfo{ 0, "T_trap",         R, &P::t_trap,         100,  0,    2000,  10,   "",    "ticks", "ticks without progress toward the nest before edge following (0: never)", {}},
   ParamInfo{ 0, "trap_progress",  R, &P::trap_progress,  30,   1,    200,   1,    "",    "cm",    "what counts as progress for T_trap: a robot that has not got this much nearer its point (exploring: farther from the nest) for T_trap ticks follows the obstacle's edge (5 until stop 22, when robots queueing at a wall gained 5 cm now and then by jostling and never began to follow it)", {}},
+  ParamInfo{ 0, "dead_end_traps", R, &P::dead_end_traps, 5,   1,    50,    1,    "",    "",      "an edge following that has made no progress for this many T_trap ticks is taken for a dead end and turns back along the same edge (once)", {}},
   ParamInfo{ 0, "T_follow",       R, &P::t_follow,       2000, 50,   5000,  50,   "",    "ticks", "longest edge following", {}},
   ParamInfo{ 0, "site_fidelity",  B, &P::site_fidelity,  1,    0,    1,     1,    "",    "",      "start an exploration trip toward where the goal or a subgoal was last seen", {}},
   ParamInfo{ 0, "form_one_at_a_time", B, &P::form_one_at_a_time, 0, 0, 1, 1, "", "", "an explorer does not start forming a subgoal while a subgoal-forming (WHITE) robot is in view, so that the chain grows one link at a time", {}},

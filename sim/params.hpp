@@ -74,6 +74,7 @@ struct Params {
   double w_seek = 1.0;              ///< weight of the pull toward a goal or RED light an explorer sees
   double t_trap = 100;              ///< ticks without progress toward a point before edge following [ticks]
   double trap_progress = 30;        ///< gain that counts as progress for T_trap [cm] [R]
+  double dead_end_traps = 5;        ///< a following without progress for this many T_trap turns back [R]
   double t_follow = 2000;           ///< longest edge following [ticks]
   bool site_fidelity = true;        ///< start an exploration trip toward the last goal/subgoal sighting
   bool form_one_at_a_time = false;  ///< an explorer does not start forming while a WHITE robot is in view [R]

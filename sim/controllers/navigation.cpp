@@ -40,8 +40,8 @@ bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, c
       nav.side = 0;       // the next obstacle gets a fresh choice
       nav.reversed = false;
     } else if (--nav.following == 0 ||
-               (!nav.reversed && static_cast<double>(nav.stalled) >= 5.0 * p.t_trap)) {
-      // out of time, or a dead end (no progress for 5 T_trap): turn back along the same edge
+               (!nav.reversed && static_cast<double>(nav.stalled) >= p.dead_end_traps * p.t_trap)) {
+      // out of time, or a dead end (no progress for dead_end_traps T_trap, 5): turn back along the same edge
       // once; when that fails too, give up
       nav.side = static_cast<std::int8_t>(-nav.side);
       if (!nav.reversed) {

@@ -52,6 +52,32 @@ TEST(Navigator, WithTheOldFiveCmThresholdACreepingQueueNeverFollowsTheEdge) {
   EXPECT_EQ(ticks_until_following(p, 0.0, 1000), static_cast<int>(p.t_trap) + 1);
 }
 
+// A following that makes no progress for dead_end_traps T_trap ticks turns back along the edge
+// (stop 33's screen of env7-8: docs/CHOICES.md "Where env8's allocated robots go"). Returns the tick
+// the side flips for a robot that follows a wall and loses `lose_cm` of progress a tick.
+int ticks_until_turning_back(const Params& p, double lose_cm) {
+  NavMemory nav;
+  Rng rng(1);
+  const Percept in = against_a_wall();
+  double progress = -500.0;
+  int side = 0;
+  for (int t = 1; t <= 20000; ++t) {
+    if (nav.following > 0) progress -= lose_cm;
+    const bool following = nav_update(nav, p, rng, progress, in, Vec2{1.0, 0.0});
+    if (following && side == 0) side = nav.side;
+    if (following && nav.side != side) return t;
+  }
+  return -1;
+}
+
+TEST(Navigator, AFollowingWithoutProgressTurnsBackAfterDeadEndTrapsTTrap) {
+  Params p;                                          // T_trap 100, dead_end_traps 5
+  const int start = static_cast<int>(p.t_trap) + 1;  // the following begins
+  EXPECT_EQ(ticks_until_turning_back(p, 0.1), start + static_cast<int>(5 * p.t_trap));
+  p.dead_end_traps = 10;
+  EXPECT_EQ(ticks_until_turning_back(p, 0.1), start + static_cast<int>(10 * p.t_trap));
+}
+
 // A robot going home along its breadcrumbs, 25 cm from the next crumb, with a robot standing on that
 // crumb (chain robots stop where explorers walked): env8, TA, seed 2 at stop 24 had five allocated
 // robots circling such crumbs in RETURN_TO_NEST for 17 000-25 000 ticks, while the chain's tip
