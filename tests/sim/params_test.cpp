@@ -29,6 +29,12 @@ TEST(Params, TableHoldsSpecRows1To42InOrderWithTheirDefaults) {
   EXPECT_TRUE(check_params(defaults).empty()) << check_params(defaults);
 }
 
+// the options outside SPEC §7 too: each default is written twice (params.hpp and the table)
+TEST(Params, TableDefaultOfEveryKeyIsTheStructsDefault) {
+  const Params defaults;
+  for (const ParamInfo& info : param_table()) EXPECT_EQ(get_value(defaults, info), info.def) << info.name;
+}
+
 TEST(Params, PaperThresholdsAreThePapersValues) {  // paper, "Subgoal Formation": 30, 70, 100, 20
   const Params p;
   EXPECT_EQ(p.d_detect, 30);
