@@ -17,9 +17,8 @@ inline constexpr double kProximityRange = 0.10;     ///< ray length from the bod
 
 inline constexpr double kLedRingRadius = 0.090;  ///< the 12-LED ring [m] (SPEC §1.1)
 
-inline constexpr double kRabRange = 3.0;  ///< range-and-bearing range [m]
-inline constexpr std::size_t kRabPayloadBytes =
-    14;  ///< range-and-bearing payload: SPEC's 10 + the goal [bytes]
+inline constexpr double kRabRange = 3.0;             ///< range-and-bearing range [m]
+inline constexpr std::size_t kRabPayloadBytes = 10;  ///< range-and-bearing payload (SPEC §2.6) [bytes]
 
 /// Angle of proximity sensor k in the robot frame [rad]: +7.5 deg, then every 15 deg (SPEC §1.1).
 constexpr double proximity_angle(std::size_t k) { return deg2rad(7.5 + 15.0 * static_cast<double>(k)); }

@@ -3,27 +3,68 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 namespace swarmpath::sim {
 
+namespace {
+
+constexpr std::int32_t kGoalUnits[4] = {1, 10, 100, 1000};  // flags bits 6-7: 10^e cm
+
+// x / unit rounded half away from zero
+std::int64_t goal_steps(std::int32_t x_cm, std::int32_t unit) {
+  const std::int64_t q = (std::abs(std::int64_t{x_cm}) + unit / 2) / unit;
+  return x_cm < 0 ? -q : q;
+}
+
+// the finest unit (1, 10, 100 cm) in which both coordinates fit 12 signed bits; beyond +-2 047 m the
+// coarsest, clamped
+int goal_unit_exponent(std::int32_t x_cm, std::int32_t y_cm) {
+  int e = 0;
+  const auto fits = [&e](std::int32_t v) { return std::abs(goal_steps(v, kGoalUnits[e])) <= kGoalMaxSteps; };
+  while (e < 2 && !(fits(x_cm) && fits(y_cm))) ++e;
+  return e;
+}
+
+std::uint32_t goal_bits(std::int32_t v_cm, int e) {
+  const std::int64_t max = kGoalMaxSteps;
+  return static_cast<std::uint32_t>(std::clamp(goal_steps(v_cm, kGoalUnits[e]), -max, max)) & 0xfff;
+}
+
+// a 12-bit two's-complement count
+std::int32_t sign_extend_12(std::uint32_t v) {
+  return static_cast<std::int32_t>(v & 0x7ff) - (v & 0x800 ? 2048 : 0);
+}
+
+}  // namespace
+
 RabPayload encode(const TaMessage& m) {
+  static_assert(kRabPayloadBytes == 10, "SPEC §2.6: the payload is 10 bytes");
   RabPayload p{};
   p[0] = m.id;
   p[1] = m.state;
   p[2] = m.parent;
-  p[3] = m.flags;
+  p[3] = static_cast<std::uint8_t>(m.flags & ~kGoalUnitMask);
   p[4] = static_cast<std::uint8_t>(m.type);
   p[5] = m.dest;
-  p[6] = static_cast<std::uint8_t>(m.remaining >> 8);
-  p[7] = static_cast<std::uint8_t>(m.remaining & 0xff);
+  p[6] = m.remaining;
   p[8] = static_cast<std::uint8_t>(m.t_founder_ds >> 8);
   p[9] = static_cast<std::uint8_t>(m.t_founder_ds & 0xff);
-  const auto gx = static_cast<std::uint16_t>(m.goal_x_cm);
-  const auto gy = static_cast<std::uint16_t>(m.goal_y_cm);
-  p[10] = static_cast<std::uint8_t>(gx >> 8);
-  p[11] = static_cast<std::uint8_t>(gx & 0xff);
-  p[12] = static_cast<std::uint8_t>(gy >> 8);
-  p[13] = static_cast<std::uint8_t>(gy & 0xff);
+  if (!founder_message(m.type)) {
+    p[3] = static_cast<std::uint8_t>(p[3] & ~kFlagGoal);  // only a founder message has room for it
+    return p;
+  }
+  // R: a founder message has no state or parent byte: bytes 1, 2 and 7 carry its goal sighting
+  p[1] = 0;
+  p[2] = 0;
+  if (!m.has_goal()) return p;
+  const int e = goal_unit_exponent(m.goal_x_cm, m.goal_y_cm);
+  const std::uint32_t x = goal_bits(m.goal_x_cm, e);
+  const std::uint32_t y = goal_bits(m.goal_y_cm, e);
+  p[1] = static_cast<std::uint8_t>(x >> 4);
+  p[2] = static_cast<std::uint8_t>(y >> 4);
+  p[7] = static_cast<std::uint8_t>(((x & 0xf) << 4) | (y & 0xf));
+  p[3] = static_cast<std::uint8_t>(p[3] | (e << kGoalUnitShift));
   return p;
 }
 
@@ -32,13 +73,21 @@ TaMessage decode(const RabPayload& p) {
   m.id = p[0];
   m.state = p[1];
   m.parent = p[2];
-  m.flags = p[3];
+  m.flags = static_cast<std::uint8_t>(p[3] & ~kGoalUnitMask);
   m.type = p[4] <= 4 ? static_cast<MsgType>(p[4]) : MsgType::kNone;
   m.dest = p[5];
-  m.remaining = static_cast<std::uint16_t>((p[6] << 8) | p[7]);
+  m.remaining = p[6];
   m.t_founder_ds = static_cast<std::uint16_t>((p[8] << 8) | p[9]);
-  m.goal_x_cm = static_cast<std::int16_t>(static_cast<std::uint16_t>((p[10] << 8) | p[11]));
-  m.goal_y_cm = static_cast<std::int16_t>(static_cast<std::uint16_t>((p[12] << 8) | p[13]));
+  if (!founder_message(m.type)) {
+    m.flags = static_cast<std::uint8_t>(m.flags & ~kFlagGoal);
+    return m;
+  }
+  m.state = kFetchState;  // R: the state a founder message implies; it names no parent
+  m.parent = kBroadcastId;
+  if (!m.has_goal()) return m;
+  const std::int32_t unit = kGoalUnits[(p[3] & kGoalUnitMask) >> kGoalUnitShift];
+  m.goal_x_cm = unit * sign_extend_12((static_cast<std::uint32_t>(p[1]) << 4) | (p[7] >> 4));
+  m.goal_y_cm = unit * sign_extend_12((static_cast<std::uint32_t>(p[2]) << 4) | (p[7] & 0xf));
   return m;
 }
 
@@ -52,6 +101,7 @@ TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_f
                        std::span<const RabMessage> inbox) {
   TaMessage out;
   out.id = my_id;
+  out.state = kFetchState;  // GOAL_FOUNDER, implied by the message type on the medium
   out.t_founder_ds = t_founder_ds;
   // the nearest JOIN addressed to me (once no robot is needed: from a robot already ACKed, whose
   // ACK was lost); ties go to the smaller id
@@ -82,7 +132,7 @@ TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_f
     out.type = MsgType::kRequest;
   }
   if (f.acks > 0) out.flags = static_cast<std::uint8_t>(out.flags | kFlagAllocating);
-  out.remaining = static_cast<std::uint16_t>(f.remaining);
+  out.remaining = static_cast<std::uint8_t>(std::min(f.remaining, 255));  // R: one byte (ids are one byte)
   return out;
 }
 

@@ -18,7 +18,7 @@ enum class MsgType : std::uint8_t { kNone = 0, kRequest = 1, kJoin = 2, kAck = 3
 
 inline constexpr std::uint8_t kBroadcastId = 255;   ///< destination "all" / parent "none"
 inline constexpr std::uint8_t kFlagAllocDone = 1;   ///< flags bit 0: the allocation is over
-inline constexpr std::uint8_t kFlagGoal = 2;        ///< flags bit 1: bytes 10-13 hold the goal [R]
+inline constexpr std::uint8_t kFlagGoal = 2;        ///< flags bit 1: a founder message holds the goal [R]
 inline constexpr std::uint8_t kFlagAllocating = 4;  ///< flags bit 2: this founder has ACKed a robot [R]
 inline constexpr std::uint8_t kFlagNeed = 8;  ///< flags bit 3: a subgoal calls for a link (recruit_call) [R]
 /// flags bit 4: a founder allocating from the resting robots (refound_starved) [R]
@@ -26,13 +26,28 @@ inline constexpr std::uint8_t kFlagRecall = 16;
 /// flags bit 5: a chain's end leaving to fetch robots; parent byte: the subgoal it leaves (refound_starved)
 /// [R]
 inline constexpr std::uint8_t kFlagFetch = 32;
-inline constexpr int kMaxTaRobots = 254;  ///< ids travel in one byte
+/// flags bits 6-7 on the medium [R]: the unit of the goal sighting, 10^e cm (encode sets them, decode
+/// takes them off; TaMessage::flags never holds them)
+inline constexpr std::uint8_t kGoalUnitShift = 6;
+inline constexpr std::uint8_t kGoalUnitMask = 0xc0;
+inline constexpr std::int32_t kGoalMaxSteps = 2047;  ///< a goal coordinate travels in 12 signed bits
+inline constexpr int kMaxTaRobots = 254;             ///< ids travel in one byte
 
-/// SPEC §2.6 framing of the 10-byte payload: 0 id; 1 state; 2 parent id (255 none); 3 flags
-/// (bit 0 ALLOC_DONE; [R] bit 1 goal, bit 2 allocating, bit 3 a subgoal calling for a link, bit 4 a founder
-/// allocating from the resting robots, bit 5 a chain's end leaving to fetch robots); 4 message type;
-/// 5 destination id (255 all); 6-7 remaining; 8-9 t_founder/10; and [R] 10-13 the founder's goal sighting
-/// relative to the nest (x, y in cm, signed; flags bit 1).
+/// REQUEST, ACK and DONE: the messages only a founder sends (founder_tick).
+constexpr bool founder_message(MsgType t) {
+  return t == MsgType::kRequest || t == MsgType::kAck || t == MsgType::kDone;
+}
+
+/// SPEC §2.6 framing of the 10-byte payload (kRabPayloadBytes): 0 id; 1 state; 2 parent id (255 none);
+/// 3 flags (bit 0 ALLOC_DONE; [R] bit 1 goal, bit 2 allocating, bit 3 a subgoal calling for a link, bit 4
+/// a founder allocating from the resting robots, bit 5 a chain's end leaving to fetch robots, bits 6-7 the
+/// goal's unit); 4 message type; 5 destination id (255 all); 6 remaining ([R] one byte: it counts robots,
+/// whose ids are one byte; SPEC 6-7); 7 [R] the goal's low bits; 8-9 t_founder/10.
+/// [R] A founder message (founder_message) carries no state (its type says GOAL_FOUNDER) and no parent,
+/// so bytes 1, 2 and 7 carry the founder's goal sighting relative to the nest (flags bit 1): x and y as
+/// 12-bit signed counts of 10^e cm (bytes 1 and 2 their high 8 bits, byte 7 their low 4 bits, x's first),
+/// e = flags bits 6-7 the finest of 1, 10, 100 cm in which both fit (+-20.47 m, +-204.7 m, +-2 047 m:
+/// the paper's arenas travel to the centimetre, any arena of kMaxArenaSide to the metre).
 struct TaMessage {
   std::uint8_t id = 0;
   std::uint8_t state = 0;
@@ -40,10 +55,10 @@ struct TaMessage {
   std::uint8_t flags = 0;
   MsgType type = MsgType::kNone;
   std::uint8_t dest = kBroadcastId;
-  std::uint16_t remaining = 0;
+  std::uint8_t remaining = 0;
   std::uint16_t t_founder_ds = 0;  ///< the founder's t [s] (its t in ticks / 10, SPEC "t_founder/10")
-  std::int16_t goal_x_cm = 0;      ///< the goal sighting relative to the nest [cm] (with kFlagGoal)
-  std::int16_t goal_y_cm = 0;
+  std::int32_t goal_x_cm = 0;  ///< the goal sighting relative to the nest [cm] (founder messages, kFlagGoal)
+  std::int32_t goal_y_cm = 0;
 
   bool alloc_done() const { return (flags & kFlagAllocDone) != 0; }
 
@@ -134,7 +149,8 @@ int fetch_for(const TaMessage& m);
 /// kGoalEmitter) says so on the medium: parent byte = the robot's id, or kGoalRabId for the goal.
 inline constexpr std::uint8_t kGoalRabId = 254;
 inline constexpr std::uint8_t kClaimState = 3;  ///< state byte of a claim: TaState::kPathFormation (asserted)
-/// state byte of a fetch message: TaState::kGoalFounder (asserted)
+/// state byte of a fetch message, and the state a founder message (founder_message) implies:
+/// TaState::kGoalFounder (asserted)
 inline constexpr std::uint8_t kFetchState = 1;
 TaMessage claim_message(std::uint8_t my_id, int emitter);
 

@@ -408,8 +408,9 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
         if (p.share_goal && mem.pf.has_sighting) {  // R: its messages (the ACK) tell where it saw the goal
           const Vec2 rel = 100.0 * (mem.pf.sighting - mem.nest);
           msg.flags = static_cast<std::uint8_t>(msg.flags | kFlagGoal);
-          msg.goal_x_cm = static_cast<std::int16_t>(std::clamp(std::round(rel.x), -32767.0, 32767.0));
-          msg.goal_y_cm = static_cast<std::int16_t>(std::clamp(std::round(rel.y), -32767.0, 32767.0));
+          constexpr double kFar = 1e9;  // [cm] far beyond any arena (kMaxArenaSide); encode clamps it
+          msg.goal_x_cm = static_cast<std::int32_t>(std::clamp(std::round(rel.x), -kFar, kFar));
+          msg.goal_y_cm = static_cast<std::int32_t>(std::clamp(std::round(rel.y), -kFar, kFar));
         }
         if (m.refounder) msg.flags = static_cast<std::uint8_t>(msg.flags | kFlagRecall);
         if (msg.type == MsgType::kDone && m.protocol.done_ticks == 1) {

@@ -6,6 +6,7 @@
 
 #include <map>
 #include <set>
+#include <utility>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -13,34 +14,72 @@
 namespace swarmpath::sim {
 namespace {
 
-TEST(TaFraming, EveryFieldSurvivesTheFourteenBytes) {
+TEST(TaFraming, EveryFieldOfAFounderMessageSurvivesTheTenBytes) {
   TaMessage m;
   m.id = 17;
-  m.state = 3;
-  m.parent = 42;
-  m.flags = kFlagAllocDone | kFlagGoal;
+  m.flags = kFlagAllocDone | kFlagGoal | kFlagRecall;
   m.type = MsgType::kAck;
   m.dest = 99;
-  m.remaining = 0x1234;
+  m.remaining = 253;
   m.t_founder_ds = 0xbeef;
   m.goal_x_cm = -1350;  // R: the goal sighting relative to the nest, signed cm
   m.goal_y_cm = 275;
   const RabPayload p = encode(m);
-  EXPECT_EQ(p.size(), 14u);  // SPEC's 10 bytes + 4 [R]
-  EXPECT_EQ(p[4], 3);        // SPEC: byte 4 is the message type
-  EXPECT_EQ(p[5], 99);
+  EXPECT_EQ(p.size(), 10u);  // SPEC §2.6: 10 bytes
+  EXPECT_EQ(p[0], 17);       // SPEC: byte 0 the sender's id
+  EXPECT_EQ(p[4], 3);        // byte 4 the message type
+  EXPECT_EQ(p[5], 99);       // byte 5 the destination
+  EXPECT_EQ(p[6], 253);      // byte 6 remaining (R: one byte)
+  EXPECT_EQ(p[8], 0xbe);     // bytes 8-9 t_founder/10
+  EXPECT_EQ(p[9], 0xef);
   const TaMessage back = decode(p);
   EXPECT_EQ(back.id, 17);
-  EXPECT_EQ(back.state, 3);
-  EXPECT_EQ(back.parent, 42);
-  EXPECT_TRUE(back.alloc_done());
+  EXPECT_EQ(back.state, kFetchState);  // a founder message's state is GOAL_FOUNDER
+  EXPECT_EQ(back.parent, kBroadcastId);
+  EXPECT_EQ(back.flags, kFlagAllocDone | kFlagGoal | kFlagRecall);
   EXPECT_EQ(back.type, MsgType::kAck);
   EXPECT_EQ(back.dest, 99);
-  EXPECT_EQ(back.remaining, 0x1234);
+  EXPECT_EQ(back.remaining, 253);
   EXPECT_EQ(back.t_founder_ds, 0xbeef);
   EXPECT_TRUE(back.has_goal());
-  EXPECT_EQ(back.goal_x_cm, -1350);
+  EXPECT_EQ(back.goal_x_cm, -1350);  // within +-20.47 m: to the centimetre
   EXPECT_EQ(back.goal_y_cm, 275);
+}
+
+TEST(TaFraming, AClaimKeepsItsStateAndParentBytes) {
+  TaMessage m = claim_message(40, 12);
+  m.flags = kFlagNeed | kFlagGoal;  // no room for a goal outside a founder message
+  const RabPayload p = encode(m);
+  EXPECT_EQ(p[1], kClaimState);  // SPEC: byte 1 state, byte 2 parent
+  EXPECT_EQ(p[2], 12);
+  const TaMessage back = decode(p);
+  EXPECT_EQ(back.state, kClaimState);
+  EXPECT_EQ(back.parent, 12);
+  EXPECT_EQ(back.flags, kFlagNeed);
+  EXPECT_FALSE(back.has_goal());
+  EXPECT_EQ(claimed_emitter(back), 12);
+}
+
+// the goal's x and y as they come back from a founder's REQUEST
+std::pair<int, int> goal_round_trip(int x_cm, int y_cm) {
+  TaMessage m;
+  m.type = MsgType::kRequest;
+  m.flags = kFlagGoal;
+  m.goal_x_cm = x_cm;
+  m.goal_y_cm = y_cm;
+  const TaMessage back = decode(encode(m));
+  EXPECT_TRUE(back.has_goal());
+  return {back.goal_x_cm, back.goal_y_cm};
+}
+
+TEST(TaFraming, TheGoalTravelsToTheCentimetreWithinTwentyMetresAndCoarserBeyond) {
+  using P = std::pair<int, int>;
+  EXPECT_EQ(goal_round_trip(1594, 0), P(1594, 0));          // the paper's farthest goal (env6, 15.94 m)
+  EXPECT_EQ(goal_round_trip(2047, -2047), P(2047, -2047));  // the 1 cm unit's edge
+  EXPECT_EQ(goal_round_trip(-2048, 3), P(-2050, 0));        // one step beyond: 10 cm, rounded
+  EXPECT_EQ(goal_round_trip(-15949, 20467), P(-15950, 20470));
+  EXPECT_EQ(goal_round_trip(150049, -199951), P(150000, -200000));  // 1 m: any arena (kMaxArenaSide)
+  EXPECT_EQ(goal_round_trip(1000000000, -5), P(204700, 0));         // beyond +-2 047 m: clamped
 }
 
 TEST(TaFraming, AnUnknownTypeDecodesAsNone) {
