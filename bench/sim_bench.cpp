@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Simulator throughput: robot-ticks per second of the diffusion controller in env4, and the cost
-// per robot-tick as the swarm grows from 100 to 10,000 robots at constant density.
+// per robot-tick as the swarm grows from 100 to 10,000 robots at constant density; whole
+// path-formation and task-allocation runs.
 //
 //   build/release/bench/sim_bench --benchmark_repetitions=9 --benchmark_enable_random_interleaving=true
 //       --benchmark_report_aggregates_only=true   (one line)
@@ -65,16 +66,12 @@ void BM_Env4TiledOneWorld(benchmark::State& state) {
 
 BENCHMARK(BM_Env4TiledOneWorld)->Arg(10)->Iterations(400)->Unit(benchmark::kMillisecond);
 
-// path formation, 100 robots in env4, from deployment to path completion (seed 3), with the
-// robots at state.range(0) cm/s: 10 = genomes/paper-v10.toml (SPEC's assumption), 20 = the default
-void BM_PathFormationEnv4ToCompletion(benchmark::State& state) {
-  const sim::Scenario s = env4();
-  const sim::Params p = state.range(0) == 10
-                            ? sim::load_params(std::string(SWARMPATH_SOURCE_DIR) + "/genomes/paper-v10.toml")
-                            : sim::Params{};
+// one whole run per iteration, from deployment to path completion; items are robot-ticks
+void run_to_completion(benchmark::State& state, const sim::Params& p, const sim::Scenario& s, sim::Mode mode,
+                       std::uint64_t seed) {
   sim::Metrics m;
   for (auto _ : state) {
-    m = sim::evaluate(p, s, sim::Mode::kPathFormation, 3);
+    m = sim::evaluate(p, s, mode, seed);
     benchmark::DoNotOptimize(m.state_hash);
   }
   const double robot_ticks =
@@ -84,12 +81,29 @@ void BM_PathFormationEnv4ToCompletion(benchmark::State& state) {
   state.counters["success"] = m.success ? 1 : 0;
 }
 
+// path formation, 100 robots in env4, from deployment to path completion (seed 3), with the
+// robots at state.range(0) cm/s: 10 = genomes/paper-v10.toml (SPEC's assumption), 20 = the default
+void BM_PathFormationEnv4ToCompletion(benchmark::State& state) {
+  const sim::Params p = state.range(0) == 10
+                            ? sim::load_params(std::string(SWARMPATH_SOURCE_DIR) + "/genomes/paper-v10.toml")
+                            : sim::Params{};
+  run_to_completion(state, p, env4(), sim::Mode::kPathFormation, 3);
+}
+
 BENCHMARK(BM_PathFormationEnv4ToCompletion)
     ->Arg(10)
     ->Arg(20)
     ->Iterations(1)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
+
+// task allocation, 100 robots in env4 with genomes/paper.toml (the defaults), from deployment to
+// path completion (seed 3): the crowd at the nest makes the range-and-bearing medium the load
+void BM_TaskAllocationEnv4ToCompletion(benchmark::State& state) {
+  run_to_completion(state, sim::Params{}, env4(), sim::Mode::kTaskAllocation, 3);
+}
+
+BENCHMARK(BM_TaskAllocationEnv4ToCompletion)->Iterations(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 }  // namespace swarmpath::bench

@@ -54,8 +54,12 @@ using RabPayload = std::array<std::uint8_t, kRabPayloadBytes>;
 struct RabMessage {
   int sender = 0;
   double range_cm = 0;
-  double bearing = 0;  ///< [rad] relative to the receiver's heading
+  Vec2 offset;  ///< the sender relative to the receiver, in the receiver's frame [m]
   RabPayload data{};
+
+  /// Bearing relative to the receiver's heading [rad], (-pi, pi]: computed when asked, since few
+  /// readers want it and the medium delivers every message to every robot in range.
+  double bearing() const { return angle_of(offset); }
 };
 
 struct Percept {

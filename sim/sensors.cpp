@@ -185,7 +185,7 @@ void sense_rab(const SensorView& v, int id, std::vector<RabMessage>& out) {
     if (j == id || !v.rab_sending[static_cast<std::size_t>(j)]) return;
     if (blocked_by_statics(v, near, me.p, pj)) return;
     const Vec2 d = pj - me.p;
-    out.push_back({j, 100.0 * norm(d), angle_of(me.to_local(d)), v.rab_out[static_cast<std::size_t>(j)]});
+    out.push_back({j, 100.0 * norm(d), me.to_local(d), v.rab_out[static_cast<std::size_t>(j)]});
   });
 }
 

@@ -9,7 +9,7 @@ namespace swarmpath::sim {
 
 namespace {
 
-constexpr std::int32_t kGoalUnits[4] = {1, 10, 100, 1000};  // flags bits 6-7: 10^e cm
+using detail::kGoalUnits;
 
 // x / unit rounded half away from zero
 std::int64_t goal_steps(std::int32_t x_cm, std::int32_t unit) {
@@ -29,11 +29,6 @@ int goal_unit_exponent(std::int32_t x_cm, std::int32_t y_cm) {
 std::uint32_t goal_bits(std::int32_t v_cm, int e) {
   const std::int64_t max = kGoalMaxSteps;
   return static_cast<std::uint32_t>(std::clamp(goal_steps(v_cm, kGoalUnits[e]), -max, max)) & 0xfff;
-}
-
-// a 12-bit two's-complement count
-std::int32_t sign_extend_12(std::uint32_t v) {
-  return static_cast<std::int32_t>(v & 0x7ff) - (v & 0x800 ? 2048 : 0);
 }
 
 }  // namespace
@@ -66,29 +61,6 @@ RabPayload encode(const TaMessage& m) {
   p[7] = static_cast<std::uint8_t>(((x & 0xf) << 4) | (y & 0xf));
   p[3] = static_cast<std::uint8_t>(p[3] | (e << kGoalUnitShift));
   return p;
-}
-
-TaMessage decode(const RabPayload& p) {
-  TaMessage m;
-  m.id = p[0];
-  m.state = p[1];
-  m.parent = p[2];
-  m.flags = static_cast<std::uint8_t>(p[3] & ~kGoalUnitMask);
-  m.type = p[4] <= 4 ? static_cast<MsgType>(p[4]) : MsgType::kNone;
-  m.dest = p[5];
-  m.remaining = p[6];
-  m.t_founder_ds = static_cast<std::uint16_t>((p[8] << 8) | p[9]);
-  if (!founder_message(m.type)) {
-    m.flags = static_cast<std::uint8_t>(m.flags & ~kFlagGoal);
-    return m;
-  }
-  m.state = kFetchState;  // R: the state a founder message implies; it names no parent
-  m.parent = kBroadcastId;
-  if (!m.has_goal()) return m;
-  const std::int32_t unit = kGoalUnits[(p[3] & kGoalUnitMask) >> kGoalUnitShift];
-  m.goal_x_cm = unit * sign_extend_12((static_cast<std::uint32_t>(p[1]) << 4) | (p[7] >> 4));
-  m.goal_y_cm = unit * sign_extend_12((static_cast<std::uint32_t>(p[2]) << 4) | (p[7] & 0xf));
-  return m;
 }
 
 FounderProtocol start_founder(int robots) {

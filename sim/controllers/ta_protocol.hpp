@@ -32,6 +32,10 @@ inline constexpr std::uint8_t kGoalUnitShift = 6;
 inline constexpr std::uint8_t kGoalUnitMask = 0xc0;
 inline constexpr std::int32_t kGoalMaxSteps = 2047;  ///< a goal coordinate travels in 12 signed bits
 inline constexpr int kMaxTaRobots = 254;             ///< ids travel in one byte
+inline constexpr std::uint8_t kClaimState = 3;  ///< state byte of a claim: TaState::kPathFormation (asserted)
+/// state byte of a fetch message, and the state a founder message (founder_message) implies:
+/// TaState::kGoalFounder (asserted)
+inline constexpr std::uint8_t kFetchState = 1;
 
 /// REQUEST, ACK and DONE: the messages only a founder sends (founder_tick).
 constexpr bool founder_message(MsgType t) {
@@ -83,7 +87,42 @@ struct IdSet {
 };
 
 RabPayload encode(const TaMessage& m);
-TaMessage decode(const RabPayload& payload);
+
+namespace detail {
+
+inline constexpr std::int32_t kGoalUnits[4] = {1, 10, 100, 1000};  ///< flags bits 6-7: 10^e cm
+
+/// a 12-bit two's-complement count
+constexpr std::int32_t sign_extend_12(std::uint32_t v) {
+  return static_cast<std::int32_t>(v & 0x7ff) - ((v & 0x800) != 0 ? 2048 : 0);
+}
+
+}  // namespace detail
+
+/// The inverse of encode. Inline: every robot decodes every message it hears several times a tick,
+/// each reader for a few fields, and the compiler keeps only those.
+inline TaMessage decode(const RabPayload& p) {
+  TaMessage m;
+  m.id = p[0];
+  m.state = p[1];
+  m.parent = p[2];
+  m.flags = static_cast<std::uint8_t>(p[3] & ~kGoalUnitMask);
+  m.type = p[4] <= 4 ? static_cast<MsgType>(p[4]) : MsgType::kNone;
+  m.dest = p[5];
+  m.remaining = p[6];
+  m.t_founder_ds = static_cast<std::uint16_t>((p[8] << 8) | p[9]);
+  if (!founder_message(m.type)) {
+    m.flags = static_cast<std::uint8_t>(m.flags & ~kFlagGoal);
+    return m;
+  }
+  m.state = kFetchState;  // R: the state a founder message implies; it names no parent
+  m.parent = kBroadcastId;
+  if (!m.has_goal()) return m;
+  const std::int32_t unit = detail::kGoalUnits[(p[3] & kGoalUnitMask) >> kGoalUnitShift];
+  m.goal_x_cm = unit * detail::sign_extend_12((static_cast<std::uint32_t>(p[1]) << 4) | (p[7] >> 4));
+  m.goal_y_cm = unit * detail::sign_extend_12((static_cast<std::uint32_t>(p[2]) << 4) | (p[7] & 0xf));
+  return m;
+}
 
 /// The founder's side. One tick at a time: it reads the JOINs addressed to it and returns what it
 /// broadcasts.
@@ -148,10 +187,6 @@ int fetch_for(const TaMessage& m);
 /// single_child [R]: an allocated robot forming from, or chained to, `emitter` (a robot id or
 /// kGoalEmitter) says so on the medium: parent byte = the robot's id, or kGoalRabId for the goal.
 inline constexpr std::uint8_t kGoalRabId = 254;
-inline constexpr std::uint8_t kClaimState = 3;  ///< state byte of a claim: TaState::kPathFormation (asserted)
-/// state byte of a fetch message, and the state a founder message (founder_message) implies:
-/// TaState::kGoalFounder (asserted)
-inline constexpr std::uint8_t kFetchState = 1;
 TaMessage claim_message(std::uint8_t my_id, int emitter);
 
 /// The emitter a message claims (claim_message), or kNobody.

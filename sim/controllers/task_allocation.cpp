@@ -181,7 +181,7 @@ void join_chain_end(const TaContext& c, RobotMemory& mem) {
   }
   // recruit_call: out of view, where the medium says the caller is; claimed on the way
   const RabMessage& call = *c.sight.call;
-  mem.pf.sighting = c.in.pose.p + (call.range_cm / 100.0) * c.in.pose.to_world(unit(call.bearing));
+  mem.pf.sighting = c.in.pose.p + (call.range_cm / 100.0) * c.in.pose.to_world(unit(call.bearing()));
   mem.pf.has_sighting = true;
   mem.pf.to_sighting = true;
   mem.pf.answering = call.sender;

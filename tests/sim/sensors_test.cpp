@@ -153,10 +153,10 @@ TEST(RangeAndBearing, DeliveredNextTickWithinRangeAndLineOfSight) {
   EXPECT_EQ(msg.data[0], 7);
   EXPECT_EQ(msg.data[9], 9);
   EXPECT_NEAR(msg.range_cm, 100.0 * dist(w.poses[0].p, w.poses[1].p), 1e-9);
-  EXPECT_NEAR(msg.bearing, kPi / 2, 0.05);  // robot 1 faces +y: robot 0, at -x, is on its left
-  EXPECT_TRUE(w.percepts[2].rab.empty());   // beyond 3 m
-  EXPECT_TRUE(w.percepts[3].rab.empty());   // behind the box
-  EXPECT_TRUE(w.percepts[0].rab.empty());   // not to itself
+  EXPECT_NEAR(msg.bearing(), kPi / 2, 0.05);  // robot 1 faces +y: robot 0, at -x, is on its left
+  EXPECT_TRUE(w.percepts[2].rab.empty());     // beyond 3 m
+  EXPECT_TRUE(w.percepts[3].rab.empty());     // behind the box
+  EXPECT_TRUE(w.percepts[0].rab.empty());     // not to itself
   // robot 0 stops sending at tick 1: nothing at tick 2
   control_all(p, w);
   act_all(w);
