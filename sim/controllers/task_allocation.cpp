@@ -324,8 +324,10 @@ void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaS
     if (m.type == MsgType::kRequest || m.type == MsgType::kAck) sight.request_heard = true;
     if (m.type == MsgType::kDone || m.alloc_done()) sight.alloc_done_heard = true;
   }
-  sight.senior_founder = senior_founder_heard({allocating, id}, in.rab, p.founder_seniority);
-  sight.dm = decision_maker_tick(id, in.rab, p.founder_seniority);
+  // (each read of the inbox only in the states whose rows use it: T8 a founder's, T11 a resting robot's)
+  if (mem.ta.state == TaState::kGoalFounder)
+    sight.senior_founder = senior_founder_heard({allocating, id}, in.rab, p.founder_seniority);
+  if (mem.ta.state != TaState::kRestingTask) sight.dm = decision_maker_tick(id, in.rab, p.founder_seniority);
   // rest_recruit: only at its deployment point (robots passing by can push a resting one far off)
   if (p.rest_recruit && mem.ta.state == TaState::kRestingTask && mem.ta.arrived &&
       100.0 * dist(in.pose.p, mem.start) <= p.d_detect) {
