@@ -73,7 +73,7 @@ TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_f
                        std::span<const RabMessage> inbox) {
   TaMessage out;
   out.id = my_id;
-  out.state = kFetchState;  // GOAL_FOUNDER, implied by the message type on the medium
+  out.state = kFounderState;  // implied by the message type on the medium
   out.t_founder_ds = t_founder_ds;
   // the nearest JOIN addressed to me (once no robot is needed: from a robot already ACKed, whose
   // ACK was lost); ties go to the smaller id

@@ -33,9 +33,9 @@ inline constexpr std::uint8_t kGoalUnitMask = 0xc0;
 inline constexpr std::int32_t kGoalMaxSteps = 2047;  ///< a goal coordinate travels in 12 signed bits
 inline constexpr int kMaxTaRobots = 254;             ///< ids travel in one byte
 inline constexpr std::uint8_t kClaimState = 3;  ///< state byte of a claim: TaState::kPathFormation (asserted)
-/// state byte of a fetch message, and the state a founder message (founder_message) implies:
-/// TaState::kGoalFounder (asserted)
-inline constexpr std::uint8_t kFetchState = 1;
+/// TaState::kGoalFounder (asserted): the state a founder message (founder_message) implies
+inline constexpr std::uint8_t kFounderState = 1;
+inline constexpr std::uint8_t kFetchState = kFounderState;  ///< state byte of a fetch message (a founder's)
 
 /// REQUEST, ACK and DONE: the messages only a founder sends (founder_tick).
 constexpr bool founder_message(MsgType t) {
@@ -115,7 +115,7 @@ inline TaMessage decode(const RabPayload& p) {
     m.flags = static_cast<std::uint8_t>(m.flags & ~kFlagGoal);
     return m;
   }
-  m.state = kFetchState;  // R: the state a founder message implies; it names no parent
+  m.state = kFounderState;  // R: the state a founder message implies; it names no parent
   m.parent = kBroadcastId;
   if (!m.has_goal()) return m;
   const std::int32_t unit = detail::kGoalUnits[(p[3] & kGoalUnitMask) >> kGoalUnitShift];

@@ -14,7 +14,7 @@ namespace swarmpath::sim {
 
 // a claim (single_child) names its sender's state as the TA state it is in
 static_assert(kClaimState == static_cast<std::uint8_t>(TaState::kPathFormation));
-static_assert(kFetchState == static_cast<std::uint8_t>(TaState::kGoalFounder));
+static_assert(kFounderState == static_cast<std::uint8_t>(TaState::kGoalFounder));
 
 std::string_view to_string(TaState s) {
   switch (s) {

@@ -34,7 +34,7 @@ TEST(TaFraming, EveryFieldOfAFounderMessageSurvivesTheTenBytes) {
   EXPECT_EQ(p[9], 0xef);
   const TaMessage back = decode(p);
   EXPECT_EQ(back.id, 17);
-  EXPECT_EQ(back.state, kFetchState);  // a founder message's state is GOAL_FOUNDER
+  EXPECT_EQ(back.state, kFounderState);  // a founder message's state is GOAL_FOUNDER
   EXPECT_EQ(back.parent, kBroadcastId);
   EXPECT_EQ(back.flags, kFlagAllocDone | kFlagGoal | kFlagRecall);
   EXPECT_EQ(back.type, MsgType::kAck);
