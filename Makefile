@@ -20,7 +20,7 @@ build:
 
 run: build
 	@mkdir -p results
-	./build/release/swarmpath evolve --config configs/evolve/default.toml --threads $(JOBS)
+	./build/release/swarmpath evolve --config configs/evolve/default.toml --threads $(JOBS) --force
 	./build/release/swarmpath evaluate --params results/evolve/default/best.toml --against genomes/paper.toml \
 	  --scenarios configs/scenarios/paper/env1.toml configs/scenarios/paper/env3.toml configs/scenarios/paper/env4.toml \
 	  --robots 60 --seeds 4 --seed-base 1000 --threads $(JOBS) --json results/evolve/default/evaluate.json

@@ -8,10 +8,13 @@
 
 #include "commands.hpp"
 #include "sim/config_error.hpp"
+#include "standard_output.hpp"
 
 namespace swarmpath::app {
 
-int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+namespace {
+
+int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
   CLI::App app{
       "swarmpath: a fast, deterministic swarm simulator for dynamic subgoal-based path formation and task "
       "allocation (Ratnabala, Peter, Charles), and the tools to tune its controllers.",
@@ -88,6 +91,12 @@ int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostrea
     }
   }
   return kExitBadInput;
+}
+
+}  // namespace
+
+int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+  return checked_standard_output(out, err, dispatch(args, out, err));
 }
 
 }  // namespace swarmpath::app

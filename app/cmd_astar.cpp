@@ -9,6 +9,7 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "evolve/path_collision.hpp"
 #include "sim/astar.hpp"
 #include "sim/config_error.hpp"
 #include "svg.hpp"
@@ -32,6 +33,7 @@ int run_astar(const AStarCommandOptions& o, std::ostream& out, std::ostream&) {
   if (!(o.inflation >= 0.0 && o.inflation <= 2.0)) {
     throw sim::ConfigError("--inflation", 0, "", "must lie in [0, 2] m");
   }
+  evolve::check_output_paths({{"--scenario", o.scenario}}, {{"--svg", o.svg}});
   const sim::Scenario s = sim::load_scenario(o.scenario);
   const sim::AStarResult a8 = sim::astar(s, {sim::Connectivity::kEight, o.resolution, o.inflation});
   const sim::AStarResult a4 = sim::astar(s, {sim::Connectivity::kFour, o.resolution, o.inflation});

@@ -3,7 +3,6 @@
 // path / A*, robots used; per scenario and robot count, and overall), or of two side by side on the same
 // seeds with their differences and a paired comparison.
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <memory>
 #include <ostream>
@@ -15,6 +14,8 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "evolve/atomic_write.hpp"
+#include "evolve/path_collision.hpp"
 #include "experiment.hpp"
 #include "sim/astar.hpp"
 #include "sim/config_error.hpp"
@@ -123,13 +124,16 @@ int run_evaluate(const EvaluateOptions& o, std::ostream& out, std::ostream& err)
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
   if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
   const bool two = !o.against.empty();
+  std::vector<evolve::NamedPath> inputs = {{"--params", o.params}, {"--against", o.against}};
+  const std::vector<std::string> files = scenario_files(o.scenarios);
+  for (const std::string& f : files) inputs.push_back({"--scenarios", f});
+  evolve::check_output_paths(inputs, {{"--json", o.json}});
   const sim::Params pa = sim::load_params(o.params);
   const sim::Params pb = two ? sim::load_params(o.against) : sim::Params{};
 
   // the grid: every scenario x robot count (its own count by default) x seed
   std::vector<sim::Scenario> scenarios;
-  for (const std::string& f : scenario_files(o.scenarios))
-    scenarios.push_back(scenario_with_overrides(f, {}, o.ticks));
+  for (const std::string& f : files) scenarios.push_back(scenario_with_overrides(f, {}, o.ticks));
   std::vector<GridCase> grid;
   for (std::size_t s = 0; s < scenarios.size(); ++s) {
     const std::vector<int> robots = o.robots.empty() ? std::vector<int>{scenarios[s].robots} : o.robots;
@@ -272,8 +276,7 @@ int run_evaluate(const EvaluateOptions& o, std::ostream& out, std::ostream& err)
                      {"neither", paired.neither}};
     }
     j["runs"] = runs;
-    std::ofstream f(o.json);
-    if (!f || !(f << j.dump(2) << "\n")) throw std::runtime_error("cannot write " + o.json);
+    evolve::write_file_atomic(o.json, j.dump(2) + "\n");
   }
   return kExitOk;
 }

@@ -13,9 +13,11 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/evolve_config.hpp"
+#include "evolve/folder_lock.hpp"
 #include "evolve/objective.hpp"
 #include "evolve/pareto_report.hpp"
 #include "evolve/pareto_runner.hpp"
+#include "evolve/run_folder.hpp"
 #include "evolve/runner.hpp"
 #include "sim/config_error.hpp"
 
@@ -29,6 +31,7 @@ struct EvolveOptions {
   int threads = 0;
   std::optional<int> generations;
   bool resume = false;
+  bool force = false;
   bool no_wall_time = false;
 };
 
@@ -134,6 +137,12 @@ int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
   if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
   const std::string dir =
       o.out.empty() ? (std::filesystem::path("results") / "evolve" / c.name).string() : o.out;
+  if (o.resume && o.force) {
+    throw sim::ConfigError("--force", 0, "",
+                           "--resume continues the run in the folder, --force replaces it: give one");
+  }
+  evolve::check_output_folder("--out", dir);
+  evolve::check_run_inputs(c, dir);
   const evolve::SwarmObjective objective(c);
   const evolve::Budget budget = evolve::effective_budget(c, o.generations);
 
@@ -147,9 +156,6 @@ int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
       << training * static_cast<std::size_t>(c.evaluation.seeds) << " runs per candidate (" << training
       << " scenario x robots settings x " << c.evaluation.seeds << " seeds), optimiser " << c.optimizer.name
       << ", budget " << budget_text(budget) << ", " << threads << " threads -> " << dir << "\n";
-  if (!o.resume && std::filesystem::exists(std::filesystem::path(dir) / "checkpoint.json")) {
-    err << "  starting afresh: the files in " << dir << " will be replaced (--resume continues them)\n";
-  }
 
   const bool tty = stderr_is_terminal();
   const Stopwatch clock;
@@ -169,6 +175,7 @@ int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
   ro.threads = threads;
   ro.generations = o.generations;
   ro.resume = o.resume;
+  ro.force = o.force;
   ro.wall_time = !o.no_wall_time;
   ro.note = [&](const std::string& s) {
     if (tty) err << "\r\033[K";
@@ -248,6 +255,9 @@ Runner add_evolve(CLI::App& app) {
   app.add_option("--generations", o->generations,
                  "Run this many generations in all (replaces the config's budget; with --resume, the total)");
   app.add_flag("--resume", o->resume, "Continue the run in the output folder from its checkpoint.json");
+  app.add_flag("--force", o->force,
+               "Start afresh in an output folder that holds an earlier run (its files move to "
+               "<out>/replaced/<time>/); without --resume or --force such a folder is refused");
   app.add_flag("--no-wall-time", o->no_wall_time,
                "Record 0 for every wall time (log.csv, checkpoint) so that runs compare bit for bit");
   return [o](std::ostream& out, std::ostream& err) { return run_evolve(*o, out, err); };

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 // swarmpath export: a params file as a params file (TOML), as JSON (name -> value, with units),
 // or as the attribute block of an ARGoS controller's <params> element.
-#include <fstream>
 #include <memory>
 #include <ostream>
 #include <sstream>
@@ -11,7 +10,9 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "evolve/atomic_write.hpp"
 #include "evolve/params_export.hpp"
+#include "evolve/path_collision.hpp"
 #include "sim/config_error.hpp"
 
 namespace swarmpath::app {
@@ -29,6 +30,7 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
     throw sim::ConfigError("--format", 0, "",
                            "unknown format \"" + o.format + "\" (choices: toml, json, argos)");
   }
+  evolve::check_output_paths({{"--params", o.params}}, {{"--out", o.out}});
   const sim::Params p = params_or_defaults(o.params);
   const std::string source = o.params.empty() ? "the paper's defaults (SPEC 7)" : o.params;
   std::ostringstream text;
@@ -43,8 +45,7 @@ int run_export(const ExportOptions& o, std::ostream& out, std::ostream& err) {
     out << text.str();
     return kExitOk;
   }
-  std::ofstream f(o.out);
-  if (!f || !(f << text.str())) throw std::runtime_error("cannot write " + o.out);
+  evolve::write_file_atomic(o.out, text.str());
   err << "wrote " << o.out << "\n";
   return kExitOk;
 }

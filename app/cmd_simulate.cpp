@@ -10,6 +10,7 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "evolve/path_collision.hpp"
 #include "sim/astar.hpp"
 #include "sim/config_error.hpp"
 #include "sim/hash.hpp"
@@ -56,6 +57,8 @@ void add_path_lines(Picture& pic, const sim::Metrics& m, const sim::AStarResult*
 }
 
 int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err) {
+  evolve::check_output_paths({{"--scenario", o.scenario}, {"--params", o.params}},
+                             {{"--svg", o.svg}, {"--heatmap", o.heatmap}});
   sim::Scenario s = scenario_with_overrides(o.scenario, o.robots, o.ticks);
   if (o.keep_running) s.sim.stop_when_complete = false;
   const sim::Params p = params_or_defaults(o.params);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // swarmpath table: a grid of scenario x robots x seed in parallel, written as the paper's table.
-#include <fstream>
+#include <functional>
 #include <memory>
 #include <ostream>
 
@@ -10,6 +10,8 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "evolve/atomic_write.hpp"
+#include "evolve/path_collision.hpp"
 #include "experiment.hpp"
 #include "sim/astar.hpp"
 #include "sim/config_error.hpp"
@@ -34,11 +36,6 @@ struct TableOptions {
   std::string markdown;
 };
 
-void write_file(const std::string& path, const std::string& text) {
-  std::ofstream f(path);
-  if (!f || !(f << text)) throw std::runtime_error("cannot write " + path);
-}
-
 int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
   if (o.seeds < 1 || o.seeds > 100000) throw sim::ConfigError("--seeds", 0, "", "must lie in [1, 100000]");
   if (o.robots.empty()) throw sim::ConfigError("--robots", 0, "", "give at least one robot count");
@@ -48,10 +45,13 @@ int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
            : std::vector<sim::Mode>{mode_from_option(o.mode)};
   if (!both && modes[0] == sim::Mode::kDiffusion)
     throw sim::ConfigError("--mode", 0, "", "the table needs pf, ta or both (diffusion forms no path)");
+  const std::vector<std::string> files = scenario_files(o.scenarios);
+  std::vector<evolve::NamedPath> inputs = {{"--params", o.params}};
+  for (const std::string& f : files) inputs.push_back({"--scenarios", f});
+  evolve::check_output_paths(inputs, {{"--json", o.json}, {"--csv", o.csv}, {"--md", o.markdown}});
   const sim::Params p = params_or_defaults(o.params);
   std::vector<sim::Scenario> scenarios;
-  for (const std::string& f : scenario_files(o.scenarios))
-    scenarios.push_back(scenario_with_overrides(f, {}, o.ticks));
+  for (const std::string& f : files) scenarios.push_back(scenario_with_overrides(f, {}, o.ticks));
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
   if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
 
@@ -97,15 +97,22 @@ int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
     write_markdown(md, report);
     if (!o.json.empty()) json = table_json(scenarios, astar8, runs, report);
   }
-  if (!o.json.empty()) write_file(o.json, json.dump(2) + "\n");
-  if (!o.csv.empty()) {
-    std::ostringstream csv;
-    write_runs_csv(csv, scenarios, astar8, runs);
-    write_file(o.csv, csv.str());
-  }
-  if (!o.markdown.empty()) write_file(o.markdown, md.str());
+  // every output that can be written is (a full disk loses one file, not the others)
+  int code = kExitOk;
+  const auto save = [&](const std::string& path, const std::function<void(std::ostream&)>& write) {
+    if (path.empty()) return;
+    try {
+      evolve::write_file_atomic(path, write);
+    } catch (const evolve::WriteError& e) {
+      err << "error: " << e.what() << "\n";
+      code = kExitFailure;
+    }
+  };
+  save(o.json, [&](std::ostream& f) { f << json.dump(2) << "\n"; });
+  save(o.csv, [&](std::ostream& f) { write_runs_csv(f, scenarios, astar8, runs); });
+  save(o.markdown, [&](std::ostream& f) { f << md.str(); });
   out << md.str();
-  return kExitOk;
+  return code;
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <cstdio>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -7,5 +8,11 @@
 
 int main(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  return swarmpath::app::run_cli(args, std::cout, std::cerr);
+  const int code = swarmpath::app::run_cli(args, std::cout, std::cerr);
+  // run_cli flushed and checked standard output; what C's stdio may still hold is checked here
+  if ((std::fflush(stdout) != 0 || std::ferror(stdout) != 0) && code == swarmpath::app::kExitOk) {
+    std::cerr << "error: cannot write standard output\n";
+    return swarmpath::app::kExitFailure;
+  }
+  return code;
 }

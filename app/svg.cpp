@@ -3,12 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
 
+#include "evolve/atomic_write.hpp"
 #include "evolve/xml_escape.hpp"
 #include "sim/robot_model.hpp"
 
@@ -212,10 +212,7 @@ void write_svg(std::ostream& out, const Picture& pic) {
 }
 
 void write_svg_file(const std::string& path, const Picture& pic) {
-  std::ofstream out(path);
-  if (!out) throw std::runtime_error("cannot write " + path);
-  write_svg(out, pic);
-  if (!out) throw std::runtime_error("error writing " + path);
+  evolve::write_file_atomic(path, [&](std::ostream& out) { write_svg(out, pic); });
 }
 
 }  // namespace swarmpath::app

@@ -39,7 +39,7 @@ std::string heat_color(double t);
 /// Where a density falls on the picture's log scale: 0 at max / 100 or below, 1 at max.
 double heat_level(double density, double max_density);
 
-/// Writes to `path`; throws std::runtime_error when the file cannot be written.
+/// Writes to `path` with evolve::write_file_atomic (throws evolve::WriteError naming it).
 void write_svg_file(const std::string& path, const Picture& pic);
 
 }  // namespace swarmpath::app

@@ -155,24 +155,4 @@ RunState read_checkpoint(const std::string& path) {
   }
 }
 
-void write_file_atomic(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (!out) throw std::runtime_error("cannot write " + tmp);
-    out << text;
-    out.flush();
-    if (!out) throw std::runtime_error("error writing " + tmp);
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw std::runtime_error("cannot rename " + tmp + " to " + path + ": " + ec.message());
-}
-
-void write_file_atomic(const std::string& path, const std::function<void(std::ostream&)>& write) {
-  std::ostringstream text;
-  write(text);
-  write_file_atomic(path, text.str());
-}
-
 }  // namespace swarmpath::evolve

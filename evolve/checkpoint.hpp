@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "evolve/atomic_write.hpp"
 #include "evolve/fitness.hpp"
 #include "evolve/optim/optimizer.hpp"
 
@@ -66,11 +67,5 @@ RunState checkpoint_from_json(const nlohmann::json& j);
 
 /// Reads DIR/checkpoint.json; throws ConfigError when it is missing or unreadable.
 RunState read_checkpoint(const std::string& path);
-
-/// Writes `text` to path.tmp, then renames it over `path` (readers never see half a file).
-void write_file_atomic(const std::string& path, const std::string& text);
-
-/// The same with the text a writer produces.
-void write_file_atomic(const std::string& path, const std::function<void(std::ostream&)>& write);
 
 }  // namespace swarmpath::evolve

@@ -328,12 +328,14 @@ EvolveConfig parse(const sim::TomlDoc& doc, const std::string& base_dir) {
   c.file = doc.name();
   const TableReader root(doc, doc.root(), "");
   c.name = root.string_or("name", std::filesystem::path(doc.name()).stem().string());
-  if (c.name.empty() || !std::all_of(c.name.begin(), c.name.end(), [](char ch) {
+  // the default output folder is results/evolve/<name>: "." and ".." would leave it
+  if (c.name.empty() || c.name == "." || c.name == ".." ||
+      !std::all_of(c.name.begin(), c.name.end(), [](char ch) {
         return std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '-' || ch == '.';
       })) {
-    root.fail(
-        "name",
-        "must be a non-empty file name of letters, digits, '_', '-' and '.' (it names the output folder)");
+    root.fail("name",
+              "must be a file name of letters, digits, '_', '-' and '.', not \".\" or \"..\" (it names the "
+              "output folder)");
   }
   if (root.has("params")) {
     c.params_written = root.string("params");

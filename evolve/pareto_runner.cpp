@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <stdexcept>
+#include <unistd.h>
 
 #include "evolve/optim/hypervolume.hpp"
 #include "evolve/optim/multi_objective.hpp"
@@ -77,22 +78,29 @@ void sort_front(const EvolveConfig& c, std::vector<Elite>& front) {
   });
 }
 
+// the checkpoint goes last (see runner.cpp's write_progress_files)
 void write_progress(const EvolveConfig& c, const RunState& st, const std::string& dir) {
-  write_file_atomic((fs::path(dir) / "checkpoint.json").string(), checkpoint_json(st).dump(1) + "\n");
   write_file_atomic((fs::path(dir) / "log.csv").string(),
                     [&](std::ostream& o) { write_pareto_log_csv(o, st.history, c.multi.objectives); });
   write_file_atomic((fs::path(dir) / "hypervolume.svg").string(),
                     [&](std::ostream& o) { write_hypervolume_svg(o, c.name, st.history); });
+  write_file_atomic((fs::path(dir) / "checkpoint.json").string(), checkpoint_json(st).dump(1) + "\n");
 }
 
 void write_final(const EvolveConfig& c, const ParetoResult& r, const RunOptions& o) {
   const fs::path dir(o.out_dir);
-  // a re-run may leave fewer points: the old front files go first
-  fs::remove_all(dir / "front");
-  fs::create_directories(dir / "front");
+  // the new front is written beside the old one, then swapped in (a re-run may leave fewer points,
+  // and a kill mid-way leaves one whole front or the other)
+  const fs::path fresh = dir / ("front." + std::to_string(::getpid()) + "-0.tmp");
+  fs::remove_all(fresh);
+  fs::create_directories(fresh);
   for (std::size_t i = 0; i < r.front.size(); ++i) {
-    write_file_atomic((dir / "front" / front_file_name(i)).string(), front_point_toml(c, r, i));
+    write_file_atomic((fresh / front_file_name(i)).string(), front_point_toml(c, r, i));
   }
+  fs::remove_all(dir / "front.old");
+  if (fs::exists(dir / "front")) fs::rename(dir / "front", dir / "front.old");
+  fs::rename(fresh, dir / "front");
+  fs::remove_all(dir / "front.old");
   write_file_atomic((dir / "pareto.csv").string(), [&](std::ostream& out) { write_pareto_csv(out, c, r); });
   write_file_atomic((dir / "pareto.svg").string(), [&](std::ostream& out) { write_pareto_svg(out, c, r); });
   write_file_atomic((dir / "run.json").string(), pareto_run_json(c, r, o.threads).dump(2) + "\n");
@@ -122,7 +130,9 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
 
   std::unique_ptr<MultiObjectiveOptimizer> opt = make_multi_objective(
       c.optimizer, c.genome.bounds(), encode(c.genome, c.genome.base), kinds.size(), optimizer_seed(c.seed));
+  const std::optional<FolderLock> lock = lock_run_folder(c, o);
   RunState st = starting_state(c, o, [&](const nlohmann::json& j) { opt->restore(j); });
+  if (files && !st.history.empty()) write_progress(c, st, o.out_dir);  // in step with the checkpoint
 
   ParetoResult result;
   result.settings = f.settings();

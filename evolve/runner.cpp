@@ -12,6 +12,7 @@
 #include <omp.h>
 
 #include "evolve/report.hpp"
+#include "evolve/run_folder.hpp"
 #include "evolve/seeds.hpp"
 #include "evolve/stopwatch.hpp"
 #include "sim/config_error.hpp"
@@ -47,12 +48,14 @@ void update_elites(std::vector<Elite>& elites, const Genome& genome, const std::
   if (elites.size() > keep) elites.resize(keep);
 }
 
+// the checkpoint goes last: a kill or a failed write before it leaves the previous checkpoint,
+// whose resume re-runs the generation (and rewrites the files that ran ahead of it)
 void write_progress_files(const EvolveConfig& c, const RunState& st, const std::string& dir) {
-  write_file_atomic((fs::path(dir) / "checkpoint.json").string(), checkpoint_json(st).dump(1) + "\n");
   write_file_atomic((fs::path(dir) / "log.csv").string(),
                     [&](std::ostream& o) { write_log_csv(o, st.history); });
   write_file_atomic((fs::path(dir) / "fitness.svg").string(),
                     [&](std::ostream& o) { write_fitness_svg(o, c.name, st.history); });
+  write_file_atomic((fs::path(dir) / "checkpoint.json").string(), checkpoint_json(st).dump(1) + "\n");
 }
 
 }  // namespace
@@ -70,9 +73,20 @@ RunState resumed_state(const EvolveConfig& c, const std::string& checkpoint) {
   return st;
 }
 
+std::optional<FolderLock> lock_run_folder(const EvolveConfig& c, const RunOptions& o) {
+  std::optional<FolderLock> lock;
+  if (!o.out_dir.empty()) lock.emplace(o.out_dir, "swarmpath evolve of " + c.file);
+  return lock;
+}
+
 RunState starting_state(const EvolveConfig& c, const RunOptions& o,
                         const std::function<void(const nlohmann::json&)>& restore) {
   const bool files = !o.out_dir.empty();
+  if (o.resume && o.force) throw std::invalid_argument("resume and force exclude each other");
+  if (files) {
+    check_run_inputs(c, o.out_dir);
+    prepare_run_folder(o.out_dir, o.resume, o.force, o.note);
+  }
   RunState st;
   st.config_hash = config_hash(c);
   if (o.resume) {
@@ -193,7 +207,9 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   // the optimiser, fresh or restored (its seed comes from the master seed only)
   std::unique_ptr<Optimizer> opt =
       factory(c.optimizer, c.genome.bounds(), encode(c.genome, c.genome.base), optimizer_seed(c.seed));
+  const std::optional<FolderLock> lock = lock_run_folder(c, o);
   RunState st = starting_state(c, o, [&](const nlohmann::json& j) { opt->restore(j); });
+  if (files && !st.history.empty()) write_progress_files(c, st, o.out_dir);  // in step with the checkpoint
 
   RunResult result;
   result.settings = f.settings();

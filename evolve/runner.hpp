@@ -15,6 +15,7 @@
 
 #include "evolve/checkpoint.hpp"
 #include "evolve/evolve_config.hpp"
+#include "evolve/folder_lock.hpp"
 #include "evolve/genome.hpp"
 #include "evolve/objective.hpp"
 #include "evolve/optim/optimizer.hpp"
@@ -37,6 +38,7 @@ struct RunOptions {
   int threads = 1;                 ///< OpenMP threads; the results do not depend on it
   std::optional<int> generations;  ///< replaces the config's budget by this many generations
   bool resume = false;             ///< continue from out_dir/checkpoint.json
+  bool force = false;              ///< start afresh over an earlier run (its files are moved aside)
   bool wall_time = true;           ///< false: every recorded wall time is 0 (bit-identical files)
   std::vector<GenerationCallback> callbacks;
   BatchProgress progress;                        ///< runs of the batch in flight
@@ -71,9 +73,15 @@ Budget effective_budget(const EvolveConfig& c, const std::optional<int>& generat
 /// (a ConfigError names both hashes when another config wrote it).
 RunState resumed_state(const EvolveConfig& c, const std::string& checkpoint);
 
+/// Locks options.out_dir for the whole run (FolderLock; none without an out_dir); throws
+/// sim::ConfigError naming the holder when another run writes there.
+std::optional<FolderLock> lock_run_folder(const EvolveConfig& c, const RunOptions& options);
+
 /// The state a run starts from: fresh (with the config's hash), or with options.resume the
 /// checkpoint in options.out_dir (checked by resumed_state, its optimiser state handed to
-/// `restore`, announced through options.note). Creates options.out_dir when one is given.
+/// `restore`, announced through options.note). With an out_dir (locked by lock_run_folder), first
+/// checks that no run file is an input and prepares the folder (prepare_run_folder: an earlier run
+/// there is refused unless options.resume or options.force).
 RunState starting_state(const EvolveConfig& c, const RunOptions& options,
                         const std::function<void(const nlohmann::json&)>& restore);
 
