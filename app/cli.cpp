@@ -58,6 +58,10 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
         app.add_subcommand("export", "Write a params file as TOML, JSON or an ARGoS <params> block.");
     commands.push_back({c, add_export(*c)});
   }
+  {
+    CLI::App* c = app.add_subcommand("arena", "Draw arenas from families (generate) and list the families.");
+    commands.push_back({c, add_arena(*c)});
+  }
 
   // CLI11 wants argv order with the program name first and parses from the back
   std::vector<std::string> reversed(args.rbegin(), args.rend());

@@ -20,5 +20,6 @@ Runner add_table(CLI::App& app);
 Runner add_evolve(CLI::App& app);
 Runner add_evaluate(CLI::App& app);
 Runner add_export(CLI::App& app);
+Runner add_arena(CLI::App& app);
 
 }  // namespace swarmpath::app

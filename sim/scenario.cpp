@@ -306,6 +306,28 @@ Scenario parse(const TomlDoc& doc) {
   if (const std::string err = check_robot_count(s, robots); !err.empty()) dep.fail("robots", err);
   s.robots = static_cast<int>(robots);
 
+  // how a generated arena was drawn (read, not checked against the generator: sim/arenas does that)
+  if (auto gen = root.table("generator")) {
+    ArenaOrigin o;
+    o.family = gen->string("family");
+    if (o.family.empty()) gen->fail("family", "must not be empty");
+    const std::int64_t seed = gen->integer("seed");
+    if (seed < 0) gen->fail("seed", "must be >= 0 (got " + std::to_string(seed) + ")");
+    o.seed = static_cast<std::uint64_t>(seed);
+    const std::int64_t version = gen->integer("version");
+    if (version < 1 || version > 1000000) gen->fail("version", "must lie in [1, 1000000]");
+    o.version = static_cast<int>(version);
+    if (auto params = gen->table("params")) {
+      for (const std::string& key : params->keys()) o.params.emplace_back(key, params->number(key));
+      params->finish();
+      std::sort(o.params.begin(), o.params.end());
+    } else {
+      gen->allow("params");
+    }
+    gen->finish();
+    s.origin = std::move(o);
+  }
+
   root.finish();
   return s;
 }

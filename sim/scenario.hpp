@@ -5,8 +5,10 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "geometry.hpp"
@@ -52,6 +54,15 @@ struct SimSettings {
   double dt() const { return 1.0 / ticks_per_second; }
 };
 
+/// How a generated arena was drawn (a scenario file's [generator] table): the family, its
+/// parameters and the seed, from which the arena generator (sim/arenas) draws it again.
+struct ArenaOrigin {
+  std::string family;
+  std::uint64_t seed = 0;
+  int version = 0;                                     ///< the arena generator's version
+  std::vector<std::pair<std::string, double>> params;  ///< every family parameter, sorted by name
+};
+
 struct Scenario {
   std::string name;  ///< e.g. "env4"
   std::string file;  ///< the file it came from, for messages ("<memory>" otherwise)
@@ -70,6 +81,7 @@ struct Scenario {
   int robots = 100;          ///< default robot count
 
   SimSettings sim;
+  std::optional<ArenaOrigin> origin;  ///< set for a generated arena
 
   Aabb arena_bounds() const { return {-0.5 * arena_size, 0.5 * arena_size}; }
 };
