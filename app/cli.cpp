@@ -14,7 +14,8 @@ namespace swarmpath::app {
 
 namespace {
 
-int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+             const evolve::EvaluatorFactory& evaluators) {
   CLI::App app{
       "swarmpath: a fast, deterministic swarm simulator for dynamic subgoal-based path formation and task "
       "allocation (Ratnabala, Peter, Charles), and the tools to tune its controllers.",
@@ -39,19 +40,19 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
   {
     CLI::App* c = app.add_subcommand(
         "table", "Run a grid of scenario x robots x seed in parallel and write the paper's results table.");
-    commands.push_back({c, add_table(*c)});
+    commands.push_back({c, add_table(*c, evaluators)});
   }
   {
     CLI::App* c = app.add_subcommand(
         "evolve",
         "Tune controller parameters with an optimiser, or evolve a Pareto front with nsga2 (evolve config; "
         "checkpoints; --resume).");
-    commands.push_back({c, add_evolve(*c)});
+    commands.push_back({c, add_evolve(*c, evaluators)});
   }
   {
     CLI::App* c = app.add_subcommand(
         "evaluate", "The experiment table of one params file, optionally beside another on the same seeds.");
-    commands.push_back({c, add_evaluate(*c)});
+    commands.push_back({c, add_evaluate(*c, evaluators)});
   }
   {
     CLI::App* c =
@@ -99,8 +100,9 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
 
 }  // namespace
 
-int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-  return checked_standard_output(out, err, dispatch(args, out, err));
+int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+            const evolve::EvaluatorFactory& evaluators) {
+  return checked_standard_output(out, err, dispatch(args, out, err, evaluators));
 }
 
 }  // namespace swarmpath::app

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "evolve/batch.hpp"
+
 namespace swarmpath::app {
 
 /// Exit codes: 0 success, 1 runtime failure, 2 bad input (command line or files).
@@ -15,6 +17,9 @@ inline constexpr int kExitBadInput = 2;
 
 /// Runs `swarmpath args...` (args without the program name); writes results to `out`,
 /// messages and progress to `err`; returns the exit code.
-int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+/// `evaluators` makes what table, evaluate and evolve run their simulations on (this process's
+/// threads unless main() runs as rank 0 of an MPI job).
+int run_cli(const std::vector<std::string>& args, std::ostream& out, std::ostream& err,
+            const evolve::EvaluatorFactory& evaluators = evolve::thread_pool_factory());
 
 }  // namespace swarmpath::app

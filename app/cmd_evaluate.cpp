@@ -117,7 +117,8 @@ struct Paired {
   int both = 0, first_faster = 0, second_faster = 0, equal = 0, only_first = 0, only_second = 0, neither = 0;
 };
 
-int run_evaluate(const EvaluateOptions& o, std::ostream& out, std::ostream& err) {
+int run_evaluate(const EvaluateOptions& o, const evolve::EvaluatorFactory& evaluators, std::ostream& out,
+                 std::ostream& err) {
   if (o.seeds < 1 || o.seeds > 100000) throw sim::ConfigError("--seeds", 0, "", "must lie in [1, 100000]");
   const sim::Mode mode = mode_from_option(o.mode);
   if (mode == sim::Mode::kDiffusion) throw sim::ConfigError("--mode", 0, "", "must be pf or ta");
@@ -148,6 +149,7 @@ int run_evaluate(const EvaluateOptions& o, std::ostream& out, std::ostream& err)
     astar[s] = a.found ? sim::to_tu(a.length_m) : std::nan("");
   }
 
+  const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
   const bool tty = stderr_is_terminal();
   const Stopwatch clock;
   const GridProgress progress = [&](std::size_t done, std::size_t total) {
@@ -157,12 +159,15 @@ int run_evaluate(const EvaluateOptions& o, std::ostream& out, std::ostream& err)
   };
   err << "swarmpath evaluate: " << scenarios.size() << " scenarios, " << grid.size()
       << " runs per params file" << (two ? " (x 2, same seeds)" : "") << ", mode " << o.mode << ", "
-      << threads << " threads\n";
-  const std::vector<GridRun> ra = run_grid(scenarios, grid, pa, threads, progress);
-  const std::vector<GridRun> rb =
-      two ? run_grid(scenarios, grid, pb, threads, progress) : std::vector<GridRun>{};
+      << evaluator->describe() << "\n";
+  // both params sets in one batch, on the same seeds
+  std::vector<std::vector<GridRun>> both =
+      run_grid(scenarios, grid, two ? std::vector<sim::Params>{pa, pb} : std::vector<sim::Params>{pa},
+               *evaluator, progress);
+  const std::vector<GridRun> ra = std::move(both[0]);
+  const std::vector<GridRun> rb = two ? std::move(both[1]) : std::vector<GridRun>{};
   if (tty) err << "\n";
-  err << "  done in " << fixed(clock.seconds(), 1) << " s\n";
+  err << "  done in " << fixed(clock.seconds(), 1) << " s: " << evaluator->summary() << "\n";
 
   // per (scenario, robots) group and overall, both sets; the paired comparison
   struct Group {
@@ -283,7 +288,7 @@ int run_evaluate(const EvaluateOptions& o, std::ostream& out, std::ostream& err)
 
 }  // namespace
 
-Runner add_evaluate(CLI::App& app) {
+Runner add_evaluate(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
   auto o = std::make_shared<EvaluateOptions>();
   app.add_option("--params", o->params, "Params file to evaluate")->required();
   app.add_option("--against", o->against,
@@ -300,7 +305,9 @@ Runner add_evaluate(CLI::App& app) {
   app.add_option("--ticks", o->ticks, "Override every scenario's max_ticks");
   app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");
   app.add_option("--json", o->json, "Write per-scenario, overall and per-run results as JSON");
-  return [o](std::ostream& out, std::ostream& err) { return run_evaluate(*o, out, err); };
+  return [o, evaluators](std::ostream& out, std::ostream& err) {
+    return run_evaluate(*o, evaluators, out, err);
+  };
 }
 
 }  // namespace swarmpath::app

@@ -130,7 +130,8 @@ void print_pareto_summary(std::ostream& out, const evolve::EvolveConfig& c, cons
       << ", log.csv, hypervolume.svg, run.json, checkpoint.json}\n";
 }
 
-int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
+int run_evolve(const EvolveOptions& o, const evolve::EvaluatorFactory& evaluators, std::ostream& out,
+               std::ostream& err) {
   const evolve::EvolveConfig c = evolve::load_evolve_config(o.config);
   if (o.generations && *o.generations < 1) throw sim::ConfigError("--generations", 0, "", "must be >= 1");
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
@@ -145,6 +146,7 @@ int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
   evolve::check_run_inputs(c, dir);
   const evolve::SwarmObjective objective(c);
   const evolve::Budget budget = evolve::effective_budget(c, o.generations);
+  const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
 
   std::size_t training = 0;
   for (const evolve::EvalSetting& s : objective.settings()) training += s.held_out ? 0 : 1;
@@ -155,7 +157,7 @@ int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
       << c.genome.dim() << " parameters (" << names << "), "
       << training * static_cast<std::size_t>(c.evaluation.seeds) << " runs per candidate (" << training
       << " scenario x robots settings x " << c.evaluation.seeds << " seeds), optimiser " << c.optimizer.name
-      << ", budget " << budget_text(budget) << ", " << threads << " threads -> " << dir << "\n";
+      << ", budget " << budget_text(budget) << ", " << evaluator->describe() << " -> " << dir << "\n";
 
   const bool tty = stderr_is_terminal();
   const Stopwatch clock;
@@ -173,6 +175,7 @@ int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
   evolve::RunOptions ro;
   ro.out_dir = dir;
   ro.threads = threads;
+  ro.evaluator = evaluator.get();
   ro.generations = o.generations;
   ro.resume = o.resume;
   ro.force = o.force;
@@ -208,13 +211,15 @@ int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
   if (c.multi_objective()) {
     const evolve::ParetoResult r = evolve::run_pareto(c, objective, ro);
     if (tty) err << "\r\033[K";
-    err << "  done in " << fixed(clock.seconds(), 1) << " s (stopped by " << r.stop_reason << ")\n";
+    err << "  done in " << fixed(clock.seconds(), 1) << " s (stopped by " << r.stop_reason
+        << "): " << evaluator->summary() << "\n";
     print_pareto_summary(out, c, r, dir);
     return kExitOk;
   }
   const evolve::RunResult r = evolve::run_evolution(c, objective, ro);
   if (tty) err << "\r\033[K";
-  err << "  done in " << fixed(clock.seconds(), 1) << " s (stopped by " << r.stop_reason << ")\n";
+  err << "  done in " << fixed(clock.seconds(), 1) << " s (stopped by " << r.stop_reason
+      << "): " << evaluator->summary() << "\n";
 
   // the finalists on fresh seeds, the base params beside them
   const evolve::Finalist& best = r.finalists[r.best];
@@ -244,7 +249,7 @@ int run_evolve(const EvolveOptions& o, std::ostream& out, std::ostream& err) {
 
 }  // namespace
 
-Runner add_evolve(CLI::App& app) {
+Runner add_evolve(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
   auto o = std::make_shared<EvolveOptions>();
   app.add_option("--config", o->config,
                  "Evolve config (TOML), e.g. configs/evolve/default.toml (CMA-ES, one best params file) or "
@@ -260,7 +265,8 @@ Runner add_evolve(CLI::App& app) {
                "<out>/replaced/<time>/); without --resume or --force such a folder is refused");
   app.add_flag("--no-wall-time", o->no_wall_time,
                "Record 0 for every wall time (log.csv, checkpoint) so that runs compare bit for bit");
-  return [o](std::ostream& out, std::ostream& err) { return run_evolve(*o, out, err); };
+  return
+      [o, evaluators](std::ostream& out, std::ostream& err) { return run_evolve(*o, evaluators, out, err); };
 }
 
 }  // namespace swarmpath::app

@@ -36,7 +36,8 @@ struct TableOptions {
   std::string markdown;
 };
 
-int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
+int run_table(const TableOptions& o, const evolve::EvaluatorFactory& evaluators, std::ostream& out,
+              std::ostream& err) {
   if (o.seeds < 1 || o.seeds > 100000) throw sim::ConfigError("--seeds", 0, "", "must lie in [1, 100000]");
   if (o.robots.empty()) throw sim::ConfigError("--robots", 0, "", "give at least one robot count");
   const bool both = o.mode == "both";
@@ -62,6 +63,7 @@ int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
     astar8[s] = a.found ? sim::to_tu(a.length_m) : std::numeric_limits<double>::quiet_NaN();
   }
 
+  const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
   const std::vector<GridCase> grid = make_grid(scenarios.size(), o.robots, modes, o.seeds, o.seed_base);
   const bool tty = stderr_is_terminal();
   const Stopwatch clock;
@@ -79,10 +81,10 @@ int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
   };
   err << "swarmpath table: " << scenarios.size() << " scenarios x " << o.robots.size() << " robot counts x "
       << modes.size() << " modes x " << o.seeds << " seeds = " << grid.size() << " runs, mode " << o.mode
-      << ", " << threads << " threads\n";
-  const std::vector<GridRun> runs = run_grid(scenarios, grid, p, threads, progress);
+      << ", " << evaluator->describe() << "\n";
+  const std::vector<GridRun> runs = run_grid(scenarios, grid, p, *evaluator, progress);
   if (tty) err << "\n";
-  err << "  done in " << fixed(clock.seconds(), 1) << " s\n";
+  err << "  done in " << fixed(clock.seconds(), 1) << " s: " << evaluator->summary() << "\n";
 
   std::ostringstream md;
   nlohmann::ordered_json json;
@@ -117,7 +119,7 @@ int run_table(const TableOptions& o, std::ostream& out, std::ostream& err) {
 
 }  // namespace
 
-Runner add_table(CLI::App& app) {
+Runner add_table(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
   auto o = std::make_shared<TableOptions>();
   app.add_option("--scenarios", o->scenarios, "Scenario files or directories of *.toml")
       ->capture_default_str();
@@ -137,7 +139,8 @@ Runner add_table(CLI::App& app) {
   app.add_option("--json", o->json, "Write runs, cases, environments and summary as JSON");
   app.add_option("--csv", o->csv, "Write one CSV line per run");
   app.add_option("--md", o->markdown, "Write the markdown table to this file too");
-  return [o](std::ostream& out, std::ostream& err) { return run_table(*o, out, err); };
+  return
+      [o, evaluators](std::ostream& out, std::ostream& err) { return run_table(*o, evaluators, out, err); };
 }
 
 }  // namespace swarmpath::app

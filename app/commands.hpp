@@ -6,6 +6,8 @@
 #include <functional>
 #include <iosfwd>
 
+#include "evolve/batch.hpp"
+
 namespace CLI {
 class App;
 }
@@ -16,9 +18,10 @@ using Runner = std::function<int(std::ostream& out, std::ostream& err)>;
 
 Runner add_simulate(CLI::App& app);
 Runner add_astar(CLI::App& app);
-Runner add_table(CLI::App& app);
-Runner add_evolve(CLI::App& app);
-Runner add_evaluate(CLI::App& app);
+// the commands that run batches of simulations run them on what `evaluators` makes
+Runner add_table(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
+Runner add_evolve(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
+Runner add_evaluate(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
 Runner add_export(CLI::App& app);
 Runner add_arena(CLI::App& app);
 

@@ -2,13 +2,12 @@
 #include "experiment.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <filesystem>
-
-#include <omp.h>
+#include <map>
+#include <memory>
+#include <utility>
 
 #include "sim/config_error.hpp"
-#include "sim/step.hpp"
 
 namespace swarmpath::app {
 
@@ -34,25 +33,43 @@ std::vector<GridRun> runs_of(const std::vector<GridRun>& runs, sim::Mode mode) {
   return out;
 }
 
-std::vector<GridRun> run_grid(const std::vector<sim::Scenario>& scenarios, const std::vector<GridCase>& grid,
-                              const sim::Params& p, int threads, const GridProgress& progress) {
-  // validate the robot counts first, so that errors come out before any work
-  std::vector<sim::Scenario> cases;
-  cases.reserve(grid.size());
-  for (const GridCase& c : grid) cases.push_back(sim::with_robots(scenarios[c.scenario], c.robots));
-
-  std::vector<GridRun> out(grid.size());
-  std::atomic<std::size_t> done{0};
-  const auto n = static_cast<std::int64_t>(grid.size());
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (std::int64_t i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    out[k] = {grid[k], sim::evaluate(p, cases[k], grid[k].mode, grid[k].seed)};  // slot k: thread-independent
-    const std::size_t finished = ++done;
-    if (progress && omp_get_thread_num() == 0) progress(finished, grid.size());
+std::vector<std::vector<GridRun>> run_grid(const std::vector<sim::Scenario>& scenarios,
+                                           const std::vector<GridCase>& grid,
+                                           const std::vector<sim::Params>& params,
+                                           evolve::BatchEvaluator& evaluator, const GridProgress& progress) {
+  // each (scenario, robots) once, checked before any work so that errors come out first
+  evolve::SimBatch batch;
+  std::map<std::pair<std::size_t, int>, std::uint32_t> index;
+  std::vector<std::uint32_t> scenario_of;
+  scenario_of.reserve(grid.size());
+  for (const GridCase& c : grid) {
+    const auto key = std::make_pair(c.scenario, c.robots);
+    auto it = index.find(key);
+    if (it == index.end()) {
+      const auto s = std::make_shared<const sim::Scenario>(sim::with_robots(scenarios[c.scenario], c.robots));
+      it = index.emplace(key, batch.add_scenario(s)).first;
+    }
+    scenario_of.push_back(it->second);
   }
-  if (progress) progress(grid.size(), grid.size());
+  for (const sim::Params& p : params) {
+    const std::uint32_t pi = batch.add_params(p);
+    for (std::size_t k = 0; k < grid.size(); ++k)
+      batch.tasks.push_back({pi, scenario_of[k], grid[k].mode, grid[k].seed});
+  }
+  const std::vector<sim::Metrics> metrics = evaluator.run(batch, progress);
+
+  std::vector<std::vector<GridRun>> out(params.size());
+  for (std::size_t i = 0; i < params.size(); ++i) {
+    out[i].reserve(grid.size());
+    for (std::size_t k = 0; k < grid.size(); ++k) out[i].push_back({grid[k], metrics[i * grid.size() + k]});
+  }
   return out;
+}
+
+std::vector<GridRun> run_grid(const std::vector<sim::Scenario>& scenarios, const std::vector<GridCase>& grid,
+                              const sim::Params& p, evolve::BatchEvaluator& evaluator,
+                              const GridProgress& progress) {
+  return std::move(run_grid(scenarios, grid, std::vector<sim::Params>{p}, evaluator, progress).front());
 }
 
 std::vector<std::string> scenario_files(const std::vector<std::string>& paths) {

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
-// A grid of simulations (scenario x robot count x seed), run in parallel with OpenMP: one
-// simulation per thread, each result in its own slot, so the results do not depend on the
-// number of threads.
+// A grid of simulations (scenario x robot count x seed), run as one batch on a BatchEvaluator
+// (OpenMP threads or MPI ranks): each result in its own slot, so the results do not depend on
+// the number of threads or ranks.
 #pragma once
 
 #include <cstdint>
@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "evolve/batch.hpp"
 #include "sim/controller.hpp"
 #include "sim/metrics.hpp"
 #include "sim/params.hpp"
@@ -34,11 +35,19 @@ std::vector<GridCase> make_grid(std::size_t scenarios, const std::vector<int>& r
                                 const std::vector<sim::Mode>& modes, int seeds, std::uint64_t seed_base);
 
 /// Called from the calling thread after each finished run (done, total); may print progress.
-using GridProgress = std::function<void(std::size_t done, std::size_t total)>;
+using GridProgress = evolve::BatchProgress;
 
-/// Runs the grid on `threads` threads; results in grid order.
+/// Runs the grid for each params set in one batch on `evaluator`: one list per params set, in
+/// grid order. Robot counts are checked (ConfigError) before anything runs.
+std::vector<std::vector<GridRun>> run_grid(const std::vector<sim::Scenario>& scenarios,
+                                           const std::vector<GridCase>& grid,
+                                           const std::vector<sim::Params>& params,
+                                           evolve::BatchEvaluator& evaluator, const GridProgress& progress);
+
+/// The same for one params set.
 std::vector<GridRun> run_grid(const std::vector<sim::Scenario>& scenarios, const std::vector<GridCase>& grid,
-                              const sim::Params& p, int threads, const GridProgress& progress);
+                              const sim::Params& p, evolve::BatchEvaluator& evaluator,
+                              const GridProgress& progress);
 
 /// The runs of one mode, in grid order.
 std::vector<GridRun> runs_of(const std::vector<GridRun>& runs, sim::Mode mode);

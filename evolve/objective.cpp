@@ -46,15 +46,23 @@ SwarmObjective::SwarmObjective(const EvolveConfig& c) : mode_(c.mode), weights_(
       const sim::Scenario sn = sim::with_robots(s, n, ref.written);
       settings_.push_back({sn.name, n, held_out});
       infos_.push_back({sn.sim.max_ticks, astar, n, mode_});
-      scenarios_.push_back(sn);
+      scenarios_.push_back(std::make_shared<const sim::Scenario>(sn));
     }
   };
   for (const ScenarioRef& ref : c.evaluation.scenarios) add(ref, false);
   for (const ScenarioRef& ref : c.reevaluate.held_out) add(ref, true);
 }
 
-RunScore SwarmObjective::evaluate(const sim::Params& p, const EvalCase& c) const {
-  const sim::Metrics m = sim::evaluate(p, scenarios_[c.setting], mode_, c.seed);
+RunScore CaseObjective::evaluate(const sim::Params& p, const EvalCase& c) const {
+  const CaseSimulation s = simulation(c);
+  return score(p, c, sim::evaluate(p, *s.scenario, s.mode, s.seed));
+}
+
+CaseSimulation SwarmObjective::simulation(const EvalCase& c) const {
+  return {scenarios_[c.setting], mode_, c.seed};
+}
+
+RunScore SwarmObjective::score(const sim::Params&, const EvalCase& c, const sim::Metrics& m) const {
   return score_run(m, infos_[c.setting], weights_);
 }
 

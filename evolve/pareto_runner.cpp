@@ -133,6 +133,8 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
   const std::optional<FolderLock> lock = lock_run_folder(c, o);
   RunState st = starting_state(c, o, [&](const nlohmann::json& j) { opt->restore(j); });
   if (files && !st.history.empty()) write_progress(c, st, o.out_dir);  // in step with the checkpoint
+  std::unique_ptr<BatchEvaluator> own_evaluator;
+  BatchEvaluator& evaluator = evaluator_of(o, own_evaluator);
 
   ParetoResult result;
   result.settings = f.settings();
@@ -147,7 +149,7 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
     const std::vector<Decoded> decoded = decode_all(c.genome, xs);
     const std::vector<EvalCase> cases =
         generation_cases(result.settings, c.evaluation.seeds, c.seed, gen, fixed);
-    const std::vector<RunScore> scores = evaluate_batch(f, decoded, cases, o.threads, o.progress);
+    const std::vector<RunScore> scores = evaluate_batch(f, decoded, cases, evaluator, o.progress);
     const std::vector<CandidateStats> stats = candidate_stats(scores, xs.size());
 
     // objectives and constraint (Deb et al. 2002 §VI: constrained domination on the success rate)
@@ -203,7 +205,7 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
   note("re-evaluating the " + std::to_string(final_front.size()) + " front points and the base params on " +
        std::to_string(result.reevaluation_cases.size()) + " fresh cases each");
   const std::vector<RunScore> scores =
-      evaluate_batch(f, points, result.reevaluation_cases, o.threads, o.progress);
+      evaluate_batch(f, points, result.reevaluation_cases, evaluator, o.progress);
   const std::vector<RunScore> base_runs =
       split_held_out(scores, points.size() - 1, result.settings, result.reevaluation_cases).first;
   for (std::size_t i = 0; i < points.size(); ++i) {

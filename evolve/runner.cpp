@@ -2,14 +2,11 @@
 #include "runner.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 #include <stdexcept>
-
-#include <omp.h>
 
 #include "evolve/report.hpp"
 #include "evolve/run_folder.hpp"
@@ -168,32 +165,48 @@ Budget effective_budget(const EvolveConfig& c, const std::optional<int>& generat
 }
 
 std::vector<RunScore> evaluate_batch(const CaseObjective& f, const std::vector<Decoded>& candidates,
+                                     const std::vector<EvalCase>& cases, BatchEvaluator& evaluator,
+                                     const BatchProgress& progress) {
+  // the batch: each case's simulation once, each valid candidate once, a task per pair
+  SimBatch batch;
+  std::vector<CaseSimulation> sims;
+  std::vector<std::uint32_t> scenario_of;
+  sims.reserve(cases.size());
+  for (const EvalCase& c : cases) {
+    sims.push_back(f.simulation(c));
+    scenario_of.push_back(batch.add_scenario(sims.back().scenario));
+  }
+  for (const Decoded& d : candidates) {
+    if (!d.violation.empty()) continue;  // penalised: not simulated
+    const std::uint32_t p = batch.add_params(d.params);
+    for (std::size_t j = 0; j < cases.size(); ++j)
+      batch.tasks.push_back({p, scenario_of[j], sims[j].mode, sims[j].seed});
+  }
+  const std::vector<sim::Metrics> metrics = evaluator.run(batch, progress);
+
+  // scores in slot order: candidate i, case j
+  std::vector<RunScore> out;
+  out.reserve(candidates.size() * cases.size());
+  std::size_t task = 0;
+  for (const Decoded& d : candidates) {
+    for (const EvalCase& c : cases) {
+      out.push_back(d.violation.empty() ? f.score(d.params, c, metrics[task++]) : f.penalty(c));
+    }
+  }
+  return out;
+}
+
+std::vector<RunScore> evaluate_batch(const CaseObjective& f, const std::vector<Decoded>& candidates,
                                      const std::vector<EvalCase>& cases, int threads,
                                      const BatchProgress& progress) {
-  const std::size_t nc = cases.size();
-  const std::size_t total = candidates.size() * nc;
-  std::vector<RunScore> out(total);
-  std::vector<std::string> errors(total);
-  std::atomic<std::size_t> done{0};
-  const auto n = static_cast<std::int64_t>(total);
-#pragma omp parallel for schedule(dynamic, 1) num_threads(std::max(1, threads))
-  for (std::int64_t i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    const Decoded& d = candidates[k / nc];
-    const EvalCase& c = cases[k % nc];
-    try {
-      out[k] = d.violation.empty() ? f.evaluate(d.params, c) : f.penalty(c);  // slot k: thread-independent
-    } catch (const std::exception& e) {
-      errors[k] = e.what();
-    }
-    const std::size_t finished = ++done;
-    if (progress && omp_get_thread_num() == 0) progress(finished, total);
-  }
-  for (const std::string& e : errors) {
-    if (!e.empty()) throw std::runtime_error("evaluation failed: " + e);
-  }
-  if (progress) progress(total, total);
-  return out;
+  ThreadPool pool(threads);
+  return evaluate_batch(f, candidates, cases, pool, progress);
+}
+
+BatchEvaluator& evaluator_of(const RunOptions& o, std::unique_ptr<BatchEvaluator>& own) {
+  if (o.evaluator) return *o.evaluator;
+  own = std::make_unique<ThreadPool>(o.threads);
+  return *own;
 }
 
 RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const RunOptions& o) {
@@ -210,6 +223,8 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   const std::optional<FolderLock> lock = lock_run_folder(c, o);
   RunState st = starting_state(c, o, [&](const nlohmann::json& j) { opt->restore(j); });
   if (files && !st.history.empty()) write_progress_files(c, st, o.out_dir);  // in step with the checkpoint
+  std::unique_ptr<BatchEvaluator> own_evaluator;
+  BatchEvaluator& evaluator = evaluator_of(o, own_evaluator);
 
   RunResult result;
   result.settings = f.settings();
@@ -229,7 +244,7 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
     const std::vector<Decoded> decoded = decode_all(c.genome, xs);
     const std::vector<EvalCase> cases =
         generation_cases(result.settings, c.evaluation.seeds, c.seed, gen, fixed);
-    const std::vector<RunScore> scores = evaluate_batch(f, decoded, cases, o.threads, o.progress);
+    const std::vector<RunScore> scores = evaluate_batch(f, decoded, cases, evaluator, o.progress);
 
     // candidate means (in case order), then tell
     const std::size_t nc = cases.size();
@@ -277,7 +292,7 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   note("re-evaluating " + std::to_string(st.elites.size()) + " finalists and the base params on " +
        std::to_string(result.reevaluation_cases.size()) + " fresh cases each");
   const std::vector<RunScore> scores =
-      evaluate_batch(f, finalists, result.reevaluation_cases, o.threads, o.progress);
+      evaluate_batch(f, finalists, result.reevaluation_cases, evaluator, o.progress);
   for (std::size_t i = 0; i < finalists.size(); ++i) {
     const auto [train, held] = split_held_out(scores, i, result.settings, result.reevaluation_cases);
     const bool base = i + 1 == finalists.size();

@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The evolution loop: ask the optimiser for a generation, decode each candidate, score every
-// (candidate x case) in parallel with OpenMP (one result slot each, so the run is bit-identical
-// at any thread count), tell the means back, keep the best distinct candidates, checkpoint, call
-// the callbacks; at the end re-evaluate the finalists on fresh seeds and pick the best by that.
+// (candidate x case) on a BatchEvaluator (OpenMP threads or MPI ranks; one result slot each, so
+// the run is bit-identical at any thread and rank count), tell the means back, keep the best distinct
+// candidates, checkpoint, call the callbacks; at the end re-evaluate the finalists on fresh seeds and pick
+// the best by that.
 #pragma once
 
 #include <cstdint>
@@ -13,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "evolve/batch.hpp"
 #include "evolve/checkpoint.hpp"
 #include "evolve/evolve_config.hpp"
 #include "evolve/folder_lock.hpp"
@@ -26,20 +28,18 @@ namespace swarmpath::evolve {
 /// (ensmallen-style callbacks).
 using GenerationCallback = std::function<bool(const GenerationRecord& record, const RunState& state)>;
 
-/// Called from the calling thread while a batch runs: runs finished of total.
-using BatchProgress = std::function<void(std::size_t done, std::size_t total)>;
-
 /// Builds the optimiser (make_optimizer unless a test puts a fake in).
 using OptimizerFactory = std::function<std::unique_ptr<Optimizer>(const OptimizerSettings&, const Bounds&,
                                                                   const Vector& x0, std::uint64_t seed)>;
 
 struct RunOptions {
-  std::string out_dir;             ///< where the files go; empty: write none
-  int threads = 1;                 ///< OpenMP threads; the results do not depend on it
-  std::optional<int> generations;  ///< replaces the config's budget by this many generations
-  bool resume = false;             ///< continue from out_dir/checkpoint.json
-  bool force = false;              ///< start afresh over an earlier run (its files are moved aside)
-  bool wall_time = true;           ///< false: every recorded wall time is 0 (bit-identical files)
+  std::string out_dir;                  ///< where the files go; empty: write none
+  int threads = 1;                      ///< OpenMP threads; the results do not depend on it
+  BatchEvaluator* evaluator = nullptr;  ///< where the simulations run; null: a ThreadPool of `threads`
+  std::optional<int> generations;       ///< replaces the config's budget by this many generations
+  bool resume = false;                  ///< continue from out_dir/checkpoint.json
+  bool force = false;                   ///< start afresh over an earlier run (its files are moved aside)
+  bool wall_time = true;                ///< false: every recorded wall time is 0 (bit-identical files)
   std::vector<GenerationCallback> callbacks;
   BatchProgress progress;                        ///< runs of the batch in flight
   std::function<void(const std::string&)> note;  ///< one-line messages (resume, re-evaluation)
@@ -113,10 +113,19 @@ std::pair<std::vector<RunScore>, std::vector<RunScore>> split_held_out(
     const std::vector<EvalCase>& cases);
 
 /// scores[i * cases.size() + j] is candidate i on case j (penalty() for candidates with a
-/// violation). Parallel over all (candidate, case) pairs; exceptions are rethrown afterwards.
+/// violation, not simulated). Every simulation of the batch runs on `evaluator`; a failed one
+/// throws once the batch is over.
+std::vector<RunScore> evaluate_batch(const CaseObjective& f, const std::vector<Decoded>& candidates,
+                                     const std::vector<EvalCase>& cases, BatchEvaluator& evaluator,
+                                     const BatchProgress& progress = {});
+
+/// The same on a ThreadPool of `threads`.
 std::vector<RunScore> evaluate_batch(const CaseObjective& f, const std::vector<Decoded>& candidates,
                                      const std::vector<EvalCase>& cases, int threads,
                                      const BatchProgress& progress = {});
+
+/// options.evaluator, or a ThreadPool of options.threads kept in `own`.
+BatchEvaluator& evaluator_of(const RunOptions& options, std::unique_ptr<BatchEvaluator>& own);
 
 /// Runs (or resumes) the evolution and writes its files into options.out_dir: log.csv,
 /// fitness.svg and checkpoint.json after every generation; best.toml and run.json at the end.

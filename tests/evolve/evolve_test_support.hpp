@@ -22,6 +22,7 @@
 #include "evolve/optim/optimizer.hpp"
 #include "evolve/runner.hpp"
 #include "sim/config_error.hpp"
+#include "sim/scenario.hpp"
 
 namespace swarmpath::evolve::testing {
 
@@ -149,6 +150,16 @@ inline void expect_error(const std::string& text, const std::string& marker, con
   }
 }
 
+/// The simulation a fake objective names: one robot for one tick (its Metrics are ignored).
+inline CaseSimulation one_tick(const EvalCase& c) {
+  static const auto scenario = std::make_shared<const sim::Scenario>(
+      sim::parse_scenario("name = \"one_tick\"\nclass = \"open\"\nnest = [-1.0, 0.0]\ngoal = [1.0, "
+                          "0.0]\n[arena]\nsize = [4.0, 4.0]\n"
+                          "[deployment]\nsize = [1.0, 1.0]\nrobots = 1\n[simulation]\nmax_ticks = 1\n",
+                          "one_tick.toml"));
+  return {scenario, sim::Mode::kPathFormation, c.seed};
+}
+
 /// An objective whose score is a function of (params, case), recording every call.
 class FakeObjective final : public CaseObjective {
  public:
@@ -159,7 +170,9 @@ class FakeObjective final : public CaseObjective {
 
   const std::vector<EvalSetting>& settings() const override { return settings_; }
 
-  RunScore evaluate(const sim::Params& p, const EvalCase& c) const override {
+  CaseSimulation simulation(const EvalCase& c) const override { return one_tick(c); }
+
+  RunScore score(const sim::Params& p, const EvalCase& c, const sim::Metrics&) const override {
     RunScore s;
     s.fitness = score_(p, c);
     s.success = true;

@@ -58,7 +58,9 @@ class TradeOff final : public CaseObjective {
 
   const std::vector<EvalSetting>& settings() const override { return settings_; }
 
-  RunScore evaluate(const sim::Params& p, const EvalCase& c) const override {
+  CaseSimulation simulation(const EvalCase& c) const override { return testing::one_tick(c); }
+
+  RunScore score(const sim::Params& p, const EvalCase& c, const sim::Metrics&) const override {
     RunScore s;
     s.success = true;
     s.ticks = 1000.0 * (1.0 + p.w_away) + noise_ * static_cast<double>(c.seed % 1000);
@@ -235,13 +237,15 @@ TEST(ParetoRunner, NothingFeasibleIsAClearError) {
    public:
     const std::vector<EvalSetting>& settings() const override { return settings_; }
 
-    RunScore evaluate(const sim::Params&, const EvalCase&) const override {
+    CaseSimulation simulation(const EvalCase& k) const override { return testing::one_tick(k); }
+
+    RunScore score(const sim::Params&, const EvalCase&, const sim::Metrics&) const override {
       RunScore s;
       s.ticks = 3000.0;
       return s;
     }
 
-    RunScore penalty(const EvalCase& k) const override { return evaluate({}, k); }
+    RunScore penalty(const EvalCase& k) const override { return score({}, k, {}); }
 
    private:
     std::vector<EvalSetting> settings_ = {{"s", 8, false}};
