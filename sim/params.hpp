@@ -70,75 +70,80 @@ struct Params {
   double d_arrive = 5;                  ///< 42: resting arrival tolerance [cm]
   // options outside the genome (SPEC §2.1, §7 "fixed experiment settings")
   NeighbourId neighbour_id = NeighbourId::kVisionId;
-  double track_gate = 20;           ///< vision-only tracking gate [cm]
-  double w_seek = 1.0;              ///< weight of the pull toward a goal or RED light an explorer sees
-  double t_trap = 100;              ///< ticks without progress toward a point before edge following [ticks]
-  double trap_progress = 30;        ///< gain that counts as progress for T_trap [cm] [R]
-  double dead_end_traps = 5;        ///< a following without progress for this many T_trap turns back [R]
-  double t_follow = 2000;           ///< longest edge following [ticks]
-  bool site_fidelity = true;        ///< start an exploration trip toward the last goal/subgoal sighting
-  bool form_one_at_a_time = false;  ///< an explorer does not start forming while a WHITE robot is in view [R]
-  double p_form = 0.1;              ///< per-tick probability that a waiting explorer starts forming
-  bool guided_departure = true;     ///< TA: allocated robots follow the founder's CYAN light out [R]
-  double guide_speed = 0.7;         ///< the founder's speed factor while leading
-  double guide_gap = 40;            ///< distance a follower keeps to its guide [cm]
-  double t_guide_lost = 30;         ///< ticks without a guide in view before a follower explores alone
-  bool backoff_spot =
-      false;  ///< forming: back off to the spot d_sub from the target toward the nest (else along the trail)
-  bool share_goal = true;  ///< TA: the founder's ACK carries where it saw the goal (relative to the nest)
-  bool seek_hidden_reference = true;  ///< aligning: a reference out of view at the start is looked for first
-  bool nudge_parent = true;     ///< SUB_NEST: a parent still RED after T_nudge ticks cannot see this robot (a
-                                ///< corner's view need not be mutual): close in on it until it turns [R]
-  double t_nudge = 100;         ///< nudge_parent: ticks a sub-nest waits for its parent's OPT1 first [ticks]
-  bool relink_recovery = true;  ///< SUB_NEST: a parent turned RECOVERY (row 13) is replaced by that robot's
-                                ///< own parent, the light's tag, once in view; till then close in on it [R]
-  double trail_slack = 45;      ///< forming, retracing its way home: how much farther from the nest than its
-                                ///< target a robot may stop as a subgoal [cm] [R]
-  bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
-  /// forming, backing off to the spot: ticks without progress toward it, no wall in the way, before it
-  /// retraces its trail (0: T_trap/4 always, before stop 32) [R]
-  double spot_patience = 300;
-  /// forming: the spot is the crumb of its own way out d_sub + 5 cm (within this tolerance) from the
-  /// target, nearer the nest (0: the straight spot) [cm] [R]
-  double spot_crumb_tol = 15;
-  /// forming, retracing its trail from the spot's way: from the crumb nearest it among those nearer the
-  /// nest than the target [R]
-  bool trail_nestward = true;
-  bool single_child = true;     ///< TA: allocated explorers attach only to an unclaimed goal or subgoal [R]
-  bool ta_backoff_spot = true;  ///< TA: allocated robots back off to the spot toward the nest [R]
-  double give_way = 20;         ///< TA: a resting robot pressed by another backs away this many ticks, then
-                                ///< returns (0: never) [R]
-  double depart_gap = 50;       ///< TA: ticks between departures, in ACK order (0: all at once) [R]
-  bool seek_tip = true;   ///< TA: an allocated explorer that sees a robot forming a subgoal and no free one
-                          ///< waits beside it for the free subgoal it becomes [R]
-  double tip_hover = 50;  ///< TA, seek_tip: distance at which it waits by the forming robot [cm]
-  bool chain_bypass = false;  ///< TA, single_child: a subgoal that sees its parent's parent within
-                              ///< d_sub + 10 cm takes it as parent; the skipped robot leaves the chain [R]
-  double nest_crowd = 200;    ///< TA: within this of the nest (the resting and waiting robots) an allocated
-                              ///< robot does not edge-follow, it slides past robots instead [cm] [R]
-  bool founder_seniority = true;  ///< TA T8: a founder that has ACKed robots outranks one that has not [R]
-  double nest_wait = 0.5;         ///< TA: decision makers and robots waiting to leave stop this fraction of
-                                  ///< R_nest_reach from the nest [R]
-  bool return_finds = true;  ///< a robot going back to the nest (budget spent) that finds the goal within
-                             ///< d_detect takes it as an explorer would (SPEC rule #1, TA T2) [R]
-  bool return_lured = true;  ///< TA: a scout going home that sees the goal (within R_vis) goes to it, so that
-                             ///< return_finds makes it the founder [R]
-  bool skip_blocked_crumbs = true;  ///< a robot going home passes over a crumb it cannot reach in T_trap [R]
-  double founder_wait = 0.9;  ///< TA: the founder runs the protocol this fraction of R_nest_reach from the
-                              ///< nest, at the crowd's rim [R]
-  bool rest_recruit = true;   ///< TA: a resting robot at its deployment point that sees a chain's end (a free
-                              ///< RED subgoal) for T_recruit ticks joins it as the next link [R]
-  bool recruit_call = true;   ///< TA, rest_recruit: a subgoal nobody has claimed for T_starve ticks calls
-                              ///< resting robots over the medium (3 m) [R]
-  double t_starve = 50;       ///< TA, recruit_call: ticks unclaimed before a subgoal calls [ticks]
-  double t_founder_wait = 300;   ///< TA: the founder ends its allocation after this long without a JOIN [R]
-  bool sighting_returns = true;  ///< TA, single_child: nothing free at the sighting -> home [R]
-  bool refound_starved = true;   ///< TA, recruit_call: a chain's end unclaimed for T_refound goes home and
-                                 ///< allocates the robots the rest of the path needs, as a founder [R]
-  double t_refound = 1500;  ///< TA, refound_starved: ticks unclaimed before the chain's end goes home [ticks]
-  double delta_refound = 0;  ///< TA, refound_starved: the delta of Eq. (3) for the rest of the path [robots]
-  double t_recruit = 50;     ///< TA, rest_recruit: ticks the free subgoal stays in view first (plus up to as
-                             ///< many again, drawn per robot, so that one robot goes) [ticks]
+  double track_gate = 20;  ///< vision-only tracking gate [cm]
+
+  // Behaviours beyond SPEC (additions): each is switched off by the value its help line names, and
+  // genomes/paper-literal.toml switches every one off (sim/additions.hpp lists them with their SPEC rule).
+  // sensing (SPEC §1.3)
+  bool led_ring =
+      true;  ///< a robot is seen when the line to its centre or to a tangent of its LED ring is clear
+  // exploring (SPEC §2.1, §2.3 rows #1, #2)
+  double w_seek = 1.0;        ///< pull of an explorer toward the goal or RED light it sees (0: none)
+  double t_trap = 100;        ///< ticks without progress before edge following and the trail (0: never)
+  double trap_progress = 30;  ///< gain that counts as progress for T_trap [cm]
+  double dead_end_traps = 5;  ///< a following without progress for this many T_trap turns back
+  double t_follow = 2000;     ///< longest edge following [ticks]
+  bool site_fidelity = true;  ///< start an exploration trip toward the last goal/subgoal sighting
+  double travel_cap =
+      3;  ///< row #2: travelling to a sighting ends the trip after this many budgets (0: never)
+  bool blocked_trip_ends = true;    ///< row #2: an edge following that gives up ends the trip
+  bool return_finds = true;         ///< row #1h: a robot going home takes the goal it finds within d_detect
+  bool return_lured = true;         ///< TA, return_finds: a scout going home turns to the goal it sees
+  bool form_one_at_a_time = false;  ///< row #1: no forming while a WHITE robot is in view (p_form per tick)
+  double p_form = 0.1;              ///< form_one_at_a_time: per-tick probability of starting to form
+  // going home along the breadcrumbs (path integration)
+  bool trail_home = true;           ///< a robot going home that the field traps retraces its own trail
+  bool skip_blocked_crumbs = true;  ///< a robot going home passes over a crumb it cannot reach in T_trap
+  // forming a subgoal (SPEC §2.3 rows #5-#8)
+  bool backoff_trail = true;  ///< a forming robot backs off along its own way from the nest (else the field)
+  bool retarget_nearer = true;    ///< row #5r: a forming robot re-targets to a RED robot nearer the nest
+  bool subgoal_nestward = true;   ///< rows #5, #6b: a subgoal forms only nearer the nest than its target
+  double trail_slack = 45;        ///< subgoal_nestward, on its trail: how much farther it may stop [cm]
+  bool stop_at_view_edge = true;  ///< row #7a: a target lost far enough away: back to where it was seen, stop
+  bool backoff_spot = false;      ///< forming: back off to the spot d_sub from the target toward the nest
+  bool backoff_far_spot = true;   ///< forming: back off to the spot when the goal was found from its far side
+  double spot_patience = 300;     ///< spot back-off: ticks without progress, no wall in the way (0: T_trap/4)
+  double spot_crumb_tol =
+      15;  ///< the spot is the crumb of its own way out this near d_sub + 5 cm [cm] (0: none)
+  bool trail_nestward =
+      true;  ///< falling back from the spot, the trail starts nearer the nest than the target
+  // aligning (SPEC §2.4, rows #10-#13) and the chain's links
+  bool align_keep_view = true;  ///< rows #10, #13: an aligning robot keeps both references in view
+  bool align_taper = true;      ///< §2.4: speed tapers onto P; avoidance only when something is sensed
+  bool r_keep_pull = true;      ///< §2.4: a robot farther than R_keep from a reference drives back to it
+  bool seek_hidden_reference = true;  ///< rows #11, #13: a reference out of view is looked for where it was
+  bool nudge_parent = true;           ///< row #9b: a SUB_NEST closes in on a parent still RED after T_nudge
+  double t_nudge = 100;               ///< nudge_parent: ticks a sub-nest waits first [ticks]
+  bool relink_recovery = true;  ///< row #17: a SUB_NEST replaces a RECOVERY parent by that robot's parent
+  // task allocation (SPEC §2.6, §2.7)
+  bool late_founder_rests = true;  ///< T7f: a founder that hears ALLOC_DONE before it allocates rests
+  bool resend_lost_ack = true;    ///< protocol: a JOIN from a robot already ACKed is ACKed again, not counted
+  bool founder_seniority = true;  ///< T8: a founder that has ACKed robots outranks one that has not
+  double founder_wait = 0.9;      ///< T4: the founder runs the protocol this fraction of R_nest_reach out
+  double nest_wait = 0.5;         ///< T3, T5: decision makers wait this fraction of R_nest_reach out
+  double t_founder_wait = 300;  ///< the founder ends its allocation after this long without a JOIN (0: never)
+  bool guided_departure = true;  ///< T5, T9: the allocated robots follow the founder's CYAN light out
+  double guide_speed = 0.7;      ///< guided_departure: the founder's speed factor while leading
+  double guide_gap = 40;         ///< guided_departure: distance a follower keeps to its guide [cm]
+  double t_guide_lost = 30;      ///< guided_departure: ticks without a guide before exploring alone
+  bool share_goal = true;        ///< T5: the founder's ACK carries where it saw the goal
+  double depart_gap = 50;        ///< T5: ticks between departures, in ACK order (0: all at once)
+  double nest_crowd =
+      200;               ///< allocated robots do not edge-follow this close to the nest [cm] (0: everywhere)
+  double give_way = 20;  ///< T6: a resting robot pressed by another backs away this long [ticks] (0: never)
+  bool single_child = true;      ///< row #1 (TA): allocated explorers attach only to an unclaimed subgoal
+  bool ta_backoff_spot = true;   ///< TA: allocated robots back off to the spot toward the nest
+  bool seek_tip = true;          ///< TA, single_child: an allocated explorer waits by a forming robot
+  double tip_hover = 50;         ///< seek_tip: distance at which it waits [cm]
+  bool sighting_returns = true;  ///< TA, single_child: nothing free at the sighting -> home (row #2)
+  bool chain_bypass = false;     ///< TA, single_child: rows #15-#16, a subgoal skips a redundant parent
+  bool rest_recruit = true;      ///< T10: a resting robot that sees a chain's free end joins it
+  double t_recruit = 50;     ///< rest_recruit: ticks the free end stays in view first (plus a draw) [ticks]
+  bool recruit_call = true;  ///< T10: a subgoal unclaimed for T_starve calls resting robots (3 m)
+  double t_starve = 50;      ///< recruit_call: ticks unclaimed before it calls [ticks]
+  bool refound_starved = true;  ///< T11, T12: a chain's end unclaimed for T_refound fetches more robots
+  double t_refound = 1500;      ///< refound_starved: ticks unclaimed before it goes home [ticks]
+  double delta_refound = 0;     ///< refound_starved: the delta of Eq. (3) for the rest of the path [robots]
 };
 
 enum class ParamType : std::uint8_t { kReal, kInteger, kBool, kChoice };
@@ -156,6 +161,7 @@ struct ParamInfo {
   std::string_view fixed;  ///< "P" (paper value), "H" (hardware), "P/H" or ""
   std::string_view unit;
   std::string_view meaning;
+  std::string_view rule;  ///< options beyond SPEC: the SPEC section or rule they change (e.g. "§2.3 #5")
   std::string_view choices[2];  ///< names of choice values 0 and 1
 };
 

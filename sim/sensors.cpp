@@ -58,6 +58,7 @@ bool ring_visible(const SensorView& v, const NearShapes& near, int self, int tar
            !(v.occlude_by_robots && blocked_by_robots(v, self, target, from, to));
   };
   if (clear(at)) return true;
+  if (!v.led_ring) return false;
   const Vec2 d = at - from;
   const double len = norm(d);
   if (len == 0.0) return false;

@@ -30,6 +30,7 @@ struct SensorView {
   Vec2 goal;
   double camera_range = 1.0;  ///< R_vis [m]
   bool occlude_by_robots = false;
+  bool led_ring = true;  ///< a robot counts as seen when its LED ring is (false: its centre only)
 };
 
 /// Proximity ring: rays of kProximityRange from the body edge at proximity_angle(k), against

@@ -21,6 +21,7 @@ SensorView sensor_view(const Scenario& s, const Params& p, const World& w) {
   view.goal = s.goal;
   view.camera_range = p.r_vis / 100.0;
   view.occlude_by_robots = s.sim.occlude_by_robots;
+  view.led_ring = p.led_ring;
   return view;
 }
 

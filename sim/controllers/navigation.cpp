@@ -88,7 +88,7 @@ Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trai
   // trapped by the field with a trail to retrace: switch to the trail for the rest of the way
   // (checked one tick ahead of nav_update, which would start edge following at T_trap)
   if (!nav.on_trail) trail.touch(in.pose.p);
-  if (!nav.on_trail && nav.following == 0 && !trail.empty() && p.t_trap > 0 &&
+  if (p.trail_home && !nav.on_trail && nav.following == 0 && !trail.empty() && p.t_trap > 0 &&
       static_cast<double>(nav.stalled) + 1.0 >= trap) {
     nav.on_trail = true;
     trail.start_home_within(in.pose.p, nest, trail_within);

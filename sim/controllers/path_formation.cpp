@@ -206,7 +206,8 @@ bool found_on_the_way_home(const PfContext& c) { return c.p.return_finds && !c.m
 bool exploration_time_over(const PfContext& c) {  // row 2, label b (or blocked for good)
   // travelling back to a sighting does not spend the budget (capped at three budgets)
   const double spent = static_cast<double>(c.m.t_state - c.m.travel_ticks);
-  const bool lost_way = static_cast<double>(c.m.travel_ticks) >= 3.0 * c.m.t_explore;
+  const bool lost_way =
+      c.p.travel_cap > 0.0 && static_cast<double>(c.m.travel_ticks) >= c.p.travel_cap * c.m.t_explore;
   return spent >= c.m.t_explore || c.m.explore_blocked || lost_way;
 }
 
@@ -219,6 +220,7 @@ bool resting_time_over(const PfContext& c) {  // row 4, label i
 }
 
 bool nestward_of_target(const PfContext& c, Vec2 at) {
+  if (!c.p.subgoal_nestward) return true;  // SPEC's rows #5, #6b: anywhere d_sub from the target
   // nearer the nest than the target; retracing its own way home (which may wind round an
   // obstacle's end) a robot may stop up to trail_slack farther [R]: more, and the chain knots
   const double slack = c.on_trail ? c.p.trail_slack * kCm : 0.0;
@@ -226,7 +228,7 @@ bool nestward_of_target(const PfContext& c, Vec2 at) {
 }
 
 bool found_subgoal_nearer_nest(const PfContext& c) {  // row 5r, label c while forming
-  return c.sight.red_nearer_nest != nullptr;
+  return c.p.retarget_nearer && c.sight.red_nearer_nest != nullptr;
 }
 
 bool target_at_subgoal_distance(const PfContext& c) {  // row 5
@@ -271,8 +273,8 @@ bool bypassed(const PfContext& c) { return c.sight.bypassed; }  // row 16 [R]
 
 bool alignment_done(const PfContext& c) {  // rows 10 and 12
   const bool both_seen = c.m.parent.visible && c.m.child.visible;
-  // out of time: done, provided both references are in view (else first back to the start)
-  if (static_cast<double>(c.m.t_state) >= c.p.t_align_max && both_seen) return true;
+  // out of time: done, provided both references are in view (else first back to the start; SPEC: done)
+  if (static_cast<double>(c.m.t_state) >= c.p.t_align_max && (both_seen || !c.p.align_keep_view)) return true;
   if (lost(c.m.parent, c.p) || lost(c.m.child, c.p)) return false;
   // as aligned as the view allows: a reference slipped out of sight; back at the start, both in view
   if (c.m.view_limited && c.m.parent.visible && c.m.child.visible && back_at_safe_pos(c.in.pose, c.m, c.p)) {
@@ -290,7 +292,8 @@ bool parent_done_or_last_subgoal(const PfContext& c) {  // row 11, label h
 // R (seek_hidden_reference): the one reference out of view (`debounced`: lost, else not seen this
 // tick) while T_align_max is not spent, or nullptr (both in view, or both out of it)
 const Tracked* hidden_reference(const PfMemory& m, const Params& p, bool debounced) {
-  if (!p.seek_hidden_reference || static_cast<double>(m.t_state) >= p.t_align_max) return nullptr;
+  if (!p.seek_hidden_reference || !p.align_keep_view || static_cast<double>(m.t_state) >= p.t_align_max)
+    return nullptr;
   const bool parent_out = debounced ? lost(m.parent, p) : !m.parent.visible;
   const bool child_out = debounced ? lost(m.child, p) : !m.child.visible;
   if (parent_out == child_out) return nullptr;
@@ -491,7 +494,7 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
                                           -field_toward(in.pose, mem.nest), in_crowd)) {
     return drive(p, mem, p.v_max * follow_edge(in, mem.nav.side), PfState::kExploring);
   }
-  mem.pf.explore_blocked = mem.pf.explore_blocked || mem.nav.gave_up;
+  mem.pf.explore_blocked = mem.pf.explore_blocked || (p.blocked_trip_ends && mem.nav.gave_up);
   const Avoidance avoid = diffusion(in.proximity, p);
   const Vec2 away = -field_toward(in.pose, mem.nest);
   Vec2 v = avoid.direction + p.w_away * away + p.w_rw * in.pose.to_local(mem.walk_dir) + sight.repulsion;
@@ -541,7 +544,7 @@ Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const
   const bool spot = p.backoff_spot || mem.pf.backoff_spot || (p.backoff_far_spot && mem.pf.far_side);
   if (mem.pf.target_reached && !spot) {
     // back off along the robot's own way from the nest: a route it knows is passable
-    if (!mem.nav.on_trail && !mem.trail.empty()) {
+    if (p.backoff_trail && !mem.nav.on_trail && !mem.trail.empty()) {
       mem.nav.on_trail = true;
       mem.trail.start_home(in.pose.p);
     }
@@ -610,7 +613,8 @@ Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
   const Vec2 b = local_cm(in.pose, m.child);
   // keep both references in view: where one slips behind an obstacle, go back to where the
   // alignment began (both were in view there) and stay (SPEC §2.4, bounded by line of sight)
-  if (!m.parent.visible || !m.child.visible || static_cast<double>(m.t_state) >= p.t_align_max) {
+  if (p.align_keep_view &&
+      (!m.parent.visible || !m.child.visible || static_cast<double>(m.t_state) >= p.t_align_max)) {
     m.view_limited = true;
   }
   // still out of view from there (a subgoal's parent just behind an obstacle's corner): drive
@@ -629,15 +633,17 @@ Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
   const double len = norm(target);
   if (len <= p.d_tol) return stop(s);
   const Avoidance avoid = diffusion(in.proximity, p);
-  const double speed = std::min(p.v_align * p.v_max, len);
   Vec2 v = (1.0 / len) * target;
   // R_keep bounds the robot itself, not only P: pushed past it, go back toward that reference
   // (not on the way back to where the alignment began: both were in view there)
-  if (!m.view_limited && norm(a) > p.r_keep) {
+  if (p.r_keep_pull && !m.view_limited && norm(a) > p.r_keep) {
     v = (1.0 / norm(a)) * a;
-  } else if (!m.view_limited && norm(b) > p.r_keep) {
+  } else if (p.r_keep_pull && !m.view_limited && norm(b) > p.r_keep) {
     v = (1.0 / norm(b)) * b;
   }
+  // SPEC §2.4 as written: V = v_align v_max P/|P| + D, D the diffusion vector
+  if (!p.align_taper) return drive(p, mem, p.v_align * p.v_max * v + avoid.direction, s);
+  const double speed = std::min(p.v_align * p.v_max, len);
   if (avoid.collision) v += avoid.direction;  // avoidance at the same (slow) speed as the pull
   return drive(p, mem, speed * v, s);
 }
@@ -802,7 +808,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   if (m.state == PfState::kSubgoalForming) {
     if (m.target.visible) {
       m.last_saw_target = in.pose.p;
-    } else if (!m.to_view_edge && m.target_reached && lost(m.target, p) &&
+    } else if (p.stop_at_view_edge && !m.to_view_edge && m.target_reached && lost(m.target, p) &&
                dist(m.last_saw_target, m.target.last_seen) / kCm >= 0.5 * p.d_sub &&
                dist(m.last_saw_target, nest) < dist(m.target.last_seen, nest)) {
       m.to_view_edge = true;

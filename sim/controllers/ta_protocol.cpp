@@ -70,7 +70,7 @@ FounderProtocol start_founder(int robots) {
 }
 
 TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_founder_ds,
-                       std::span<const RabMessage> inbox) {
+                       std::span<const RabMessage> inbox, bool resend_lost_ack) {
   TaMessage out;
   out.id = my_id;
   out.state = kFounderState;  // implied by the message type on the medium
@@ -82,7 +82,7 @@ TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_f
   for (const RabMessage& r : inbox) {
     const TaMessage m = decode(r.data);
     if (m.type != MsgType::kJoin || m.dest != my_id) continue;
-    if (f.remaining == 0 && !f.is_acked(m.id)) continue;
+    if (f.is_acked(m.id) ? !resend_lost_ack : f.remaining == 0) continue;
     if (best == nullptr || r.range_cm < best->range_cm || (r.range_cm == best->range_cm && m.id < best_id)) {
       best = &r;
       best_id = m.id;

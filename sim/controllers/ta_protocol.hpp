@@ -145,8 +145,9 @@ FounderProtocol start_founder(int robots);
 /// from a robot already ACKed (its ACK was lost) is ACKed again without counting it again, also
 /// after the count has reached zero, so that a lost ACK does not leave a counted robot behind.
 /// Without a JOIN it repeats REQUEST; once no robot is needed, it broadcasts DONE.
+/// `resend_lost_ack` off: a JOIN from a robot already ACKed is ignored.
 TaMessage founder_tick(FounderProtocol& f, std::uint8_t my_id, std::uint16_t t_founder_ds,
-                       std::span<const RabMessage> inbox);
+                       std::span<const RabMessage> inbox, bool resend_lost_ack = true);
 
 /// What a decision maker does this tick.
 enum class DmDecision : std::uint8_t { kWait, kGo, kRest };

@@ -93,7 +93,7 @@ bool senior_founder(const TaContext& c) {  // T8 [R]: duplicate founders
 }
 
 bool late_founder(const TaContext& c) {  // a founder that hears ALLOC_DONE before it allocates
-  return !c.m.protocol_started && c.sight.alloc_done_heard && !c.m.refounder;
+  return c.p.late_founder_rests && !c.m.protocol_started && c.sight.alloc_done_heard && !c.m.refounder;
 }
 
 bool founder_done_and_counts_self(const TaContext& c) {  // T9
@@ -404,9 +404,10 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
       if (m.protocol_started) {
         // no JOIN for T_founder_wait ticks: nobody is left to ask; allocate what it has [R]
         m.waited = m.protocol.remaining > 0 && !joined(id, in.rab) ? m.waited + 1 : 0;
-        if (static_cast<double>(m.waited) >= p.t_founder_wait) m.protocol.remaining = 0;
+        if (p.t_founder_wait > 0.0 && static_cast<double>(m.waited) >= p.t_founder_wait)
+          m.protocol.remaining = 0;
         const auto t = static_cast<std::uint16_t>(std::min(65535.0, std::round(m.t_founder_s)));
-        TaMessage msg = founder_tick(m.protocol, id, t, in.rab);
+        TaMessage msg = founder_tick(m.protocol, id, t, in.rab, p.resend_lost_ack);
         if (p.share_goal && mem.pf.has_sighting) {  // R: its messages (the ACK) tell where it saw the goal
           const Vec2 rel = 100.0 * (mem.pf.sighting - mem.nest);
           msg.flags = static_cast<std::uint8_t>(msg.flags | kFlagGoal);

@@ -35,6 +35,18 @@ TEST(Params, TableDefaultOfEveryKeyIsTheStructsDefault) {
   for (const ParamInfo& info : param_table()) EXPECT_EQ(get_value(defaults, info), info.def) << info.name;
 }
 
+// every option beyond SPEC §7 says which SPEC rule it changes; SPEC's own rows need not
+TEST(Params, EveryOptionOutsideSpecSevenNamesTheRuleItChanges) {
+  for (const ParamInfo& info : param_table()) {
+    if (info.row == 0) {
+      EXPECT_EQ(info.rule.substr(0, 2), "§") << info.name << ": \"" << info.rule << "\"";
+      EXPECT_FALSE(info.meaning.empty()) << info.name;
+    } else {
+      EXPECT_TRUE(info.rule.empty()) << info.name;
+    }
+  }
+}
+
 TEST(Params, PaperThresholdsAreThePapersValues) {  // paper, "Subgoal Formation": 30, 70, 100, 20
   const Params p;
   EXPECT_EQ(p.d_detect, 30);

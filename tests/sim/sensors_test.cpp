@@ -58,6 +58,16 @@ TEST(Camera, RobotBehindAWallIsNotSeen) {
   EXPECT_NE(find_emitter(blobs, 2), nullptr);  // past the wall's end: seen
 }
 
+// led_ring [R]: a box's corner hides the robot's centre but not the 9 cm ring's near tangent point
+TEST(Camera, ARobotIsSeenByItsLedRingUnlessThatIsSwitchedOff) {
+  const Scenario s = test::small_arena("[[box]]\ncenter = [0.45, -0.085]\nsize = [0.05, 0.23]\n");
+  const World w = world_at(s, {pose_at(0.0, 0.0), pose_at(0.9, 0.0)});
+  EXPECT_NE(find_emitter(camera(s, w, 0), 1), nullptr);
+  Params centre_only;
+  centre_only.led_ring = false;
+  EXPECT_EQ(find_emitter(camera(s, w, 0, centre_only), 1), nullptr);
+}
+
 TEST(Camera, RangeIsRvisAndDarkLedsAreInvisible) {
   const Scenario s = test::small_arena();
   World w = world_at(s, {pose_at(0.0, 0.0), pose_at(0.99, 0.0), pose_at(0.0, -1.01), pose_at(-0.5, 0.0)});

@@ -109,7 +109,8 @@ struct Sent {
 // `lose(tick, sender, receiver)` drops a message; `delay(tick, sender)` adds ticks to its latency.
 struct Exchange {
   int k = 0;
-  int need = 0;  // robots the founder asks for
+  int need = 0;        // robots the founder asks for
+  bool resend = true;  // resend_lost_ack
   std::function<bool(std::int64_t, int, int)> lose = [](std::int64_t, int, int) { return false; };
   std::function<int(std::int64_t, int)> delay = [](std::int64_t, int) { return 0; };
 
@@ -136,7 +137,7 @@ struct Exchange {
       }
       std::erase_if(air, [t](const Sent& s) { return s.deliver_at <= t; });
       // the founder, then every decision maker still at the nest
-      const TaMessage f = founder_tick(founder, 0, 150, inbox[0]);
+      const TaMessage f = founder_tick(founder, 0, 150, inbox[0], resend);
       air.push_back({t + 1 + delay(t, 0), 0, encode(f)});
       for (int i = 1; i <= k; ++i) {
         if (decided.count(i) != 0) continue;
@@ -203,6 +204,21 @@ TEST(TaProtocol, LostAcksAreRepeatedWithoutCountingARobotTwice) {
   const std::set<int> went(x.went.begin(), x.went.end());
   EXPECT_EQ(went.size(), x.went.size());  // nobody went twice
   EXPECT_EQ(went, x.acked_ids());         // the robots that went are the robots counted
+}
+
+// resend_lost_ack off: a robot whose ACK was lost JOINs again and is ignored; it is counted, never leaves
+TEST(TaProtocol, WithoutTheResendARobotWhoseAckWasLostIsCountedButStays) {
+  Exchange x;
+  x.k = 10;
+  x.need = 4;
+  x.resend = false;
+  // REQUEST at tick 0, JOINs at 1, the first ACK (to robot 1, the nearest) at 2, delivered at 3: lost
+  x.lose = [](std::int64_t t, int sender, int receiver) { return sender == 0 && receiver == 1 && t == 3; };
+  x.run(5);
+  EXPECT_EQ(x.founder.acks, 4);
+  EXPECT_TRUE(x.acked_ids().contains(1));
+  EXPECT_EQ(x.went.size(), 3u);  // robot 1 was counted but rested
+  EXPECT_EQ(x.decided[1], DmDecision::kRest);
 }
 
 TEST(TaProtocol, LostAndLateJoinsDoNotAllocateTwice) {

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: MIT
+#include "additions.hpp"
+
+#include <array>
+
+namespace swarmpath::sim {
+
+namespace {
+
+constexpr auto kBoth = AdditionScope::kBoth;
+constexpr auto kTa = AdditionScope::kTaskAllocation;
+
+// clang-format off
+// name, title, SPEC rule, scope, off settings, the additions it acts only beside
+const std::array kAdditions{
+  // sensing
+  Addition{"led_ring", "a robot is seen by its LED ring, not only its centre", "§1.3 camera", kBoth, {{{"led_ring", 0}}}, {}},
+  // exploring
+  Addition{"w_seek", "explorers steer to the goal or a RED light in view", "§2.1, #1", kBoth, {{{"w_seek", 0}}}, {}},
+  Addition{"T_trap", "edge following out of a field's minima", "§2.1 fields", kBoth, {{{"T_trap", 0}}}, {}},
+  Addition{"site_fidelity", "a trip starts at the last sighting of the chain", "§2.3 #2", kBoth, {{{"site_fidelity", 0}}}, {}},
+  Addition{"travel_cap", "travel to a sighting ends the trip after 3 budgets", "§2.3 #2", kBoth, {{{"travel_cap", 0}}}, {"site_fidelity"}},
+  Addition{"blocked_trip_ends", "an explorer whose edge following gives up goes home", "§2.3 #2", kBoth, {{{"blocked_trip_ends", 0}}}, {"T_trap"}},
+  Addition{"return_finds", "a robot going home takes the goal it finds", "§2.3 #1h, §2.6 T2", kBoth, {{{"return_finds", 0}}}, {}},
+  Addition{"return_lured", "a scout going home turns to the goal it sees", "§2.6 T2", kTa, {{{"return_lured", 0}}}, {"return_finds"}},
+  // going home along the breadcrumbs
+  Addition{"trail_home", "a robot going home that the field traps retraces its trail", "§2.1 fields, #3", kBoth, {{{"trail_home", 0}}}, {"T_trap"}},
+  Addition{"skip_blocked_crumbs", "a crumb a robot cannot reach is passed over", "§2.1 fields", kBoth, {{{"skip_blocked_crumbs", 0}}}, {"T_trap", "trail_home"}},
+  // forming a subgoal
+  Addition{"backoff_trail", "forming robots back off along their own way out", "§2.3 #5", kBoth, {{{"backoff_trail", 0}}}, {}},
+  Addition{"retarget_nearer", "a forming robot re-targets to a RED nearer the nest", "§2.3 #5r", kBoth, {{{"retarget_nearer", 0}}}, {}},
+  Addition{"subgoal_nestward", "subgoals form only nearer the nest than their target", "§2.3 #5, #6b", kBoth, {{{"subgoal_nestward", 0}}}, {}},
+  Addition{"stop_at_view_edge", "a target lost far off: back to where it was seen, stop", "§2.3 #7a", kBoth, {{{"stop_at_view_edge", 0}}}, {}},
+  Addition{"backoff_far_spot", "the goal found from its far side: back off to the spot", "§2.3 #5", kBoth, {{{"backoff_far_spot", 0}}}, {}},
+  Addition{"spot_patience", "patience on the way to the spot without a wall in the way", "§2.3 #5", kBoth, {{{"spot_patience", 0}}}, {"backoff_far_spot", "T_trap"}},
+  Addition{"spot_crumb_tol", "the spot is a crumb of the robot's own way out", "§2.3 #5", kBoth, {{{"spot_crumb_tol", 0}}}, {"backoff_far_spot"}},
+  Addition{"trail_nestward", "falling back from the spot, the trail starts nestward", "§2.3 #5", kBoth, {{{"trail_nestward", 0}}}, {"backoff_far_spot", "T_trap"}},
+  // aligning and the chain's links
+  Addition{"align_keep_view", "an aligning robot keeps both references in view", "§2.4, #10, #13", kBoth, {{{"align_keep_view", 0}}}, {}},
+  Addition{"align_taper", "the alignment tapers onto P, avoiding only when touching", "§2.4", kBoth, {{{"align_taper", 0}}}, {}},
+  Addition{"r_keep_pull", "a robot beyond R_keep of a reference drives back to it", "§2.4", kBoth, {{{"r_keep_pull", 0}}}, {}},
+  Addition{"seek_hidden_reference", "a reference out of view is looked for where it was", "§2.3 #11, #13", kBoth, {{{"seek_hidden_reference", 0}}}, {"align_keep_view"}},
+  Addition{"nudge_parent", "a SUB_NEST closes in on a parent that stays RED", "§2.3 #9b", kBoth, {{{"nudge_parent", 0}}}, {}},
+  Addition{"relink_recovery", "a SUB_NEST takes a RECOVERY parent's parent", "§2.3 #17", kBoth, {{{"relink_recovery", 0}}}, {}},
+  // task allocation
+  Addition{"late_founder_rests", "a founder that hears ALLOC_DONE first rests", "§2.6 T7f", kTa, {{{"late_founder_rests", 0}}}, {}},
+  Addition{"resend_lost_ack", "a repeated JOIN is ACKed again, not counted", "§2.6 protocol", kTa, {{{"resend_lost_ack", 0}}}, {}},
+  Addition{"founder_seniority", "a founder that has ACKed outranks a smaller id", "§2.6 T8", kTa, {{{"founder_seniority", 0}}}, {}},
+  Addition{"founder_wait", "the founder runs the protocol at the crowd's rim", "§2.6 T4", kTa, {{{"founder_wait", 0.5}}}, {}},
+  Addition{"T_founder_wait", "the founder stops allocating after 300 ticks without a JOIN", "§2.6 T9", kTa, {{{"T_founder_wait", 0}}}, {}},
+  Addition{"guided_departure", "the allocated robots follow the founder out", "§2.6 T5, T9", kTa, {{{"guided_departure", 0}}}, {"site_fidelity"}},
+  Addition{"share_goal", "the ACK carries where the goal was seen", "§2.6 protocol, T5", kTa, {{{"share_goal", 0}}}, {"site_fidelity"}},
+  Addition{"depart_gap", "allocated robots leave one after another", "§2.6 T5", kTa, {{{"depart_gap", 0}}}, {}},
+  Addition{"nest_crowd", "no edge following among the robots at the nest", "§2.1 fields", kTa, {{{"nest_crowd", 0}}}, {"T_trap"}},
+  Addition{"give_way", "resting robots give way to a robot pressing on them", "§2.6 T6", kTa, {{{"give_way", 0}}}, {}},
+  Addition{"single_child", "allocated explorers attach only to an unclaimed subgoal", "§2.3 #1", kTa, {{{"single_child", 0}}}, {}},
+  Addition{"ta_backoff_spot", "allocated robots back off to the spot toward the nest", "§2.3 #5", kTa, {{{"ta_backoff_spot", 0}}}, {}},
+  Addition{"seek_tip", "an allocated explorer waits by a forming robot", "§2.3 #1", kTa, {{{"seek_tip", 0}}}, {"single_child"}},
+  Addition{"sighting_returns", "nothing free at the sighting: home", "§2.3 #2", kTa, {{{"sighting_returns", 0}}}, {"single_child", "site_fidelity"}},
+  Addition{"rest_recruit", "a resting robot joins a chain's free end in view", "§2.6 T10", kTa, {{{"rest_recruit", 0}}}, {}},
+  Addition{"recruit_call", "a chain's end calls resting robots on the medium", "§2.6 T10", kTa, {{{"recruit_call", 0}}}, {"rest_recruit", "single_child"}},
+  Addition{"refound_starved", "a chain's end fetches more robots (a second allocation)", "§2.6 T11, T12", kTa, {{{"refound_starved", 0}}}, {"recruit_call"}},
+};
+
+// SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
+constexpr std::array kSpecDefaults{
+  Setting{"v_max", 10},            // row 7 [A]
+  Setting{"delta_open", 5},        // row 33
+  Setting{"delta_obstacle", 15},   // row 34
+  Setting{"delta_complex", 20},    // row 35
+};
+
+// clang-format on
+
+void set(Params& p, const Setting& s) {
+  const ParamInfo* info = find_param(s.key);
+  if (info != nullptr) set_value(p, *info, s.value);
+}
+
+}  // namespace
+
+std::span<const Addition> additions() { return kAdditions; }
+
+const Addition* find_addition(std::string_view name) {
+  for (const Addition& a : kAdditions) {
+    if (a.name == name) return &a;
+  }
+  return nullptr;
+}
+
+void switch_off(Params& p, const Addition& a) {
+  for (const Setting& s : a.off) {
+    if (!s.key.empty()) set(p, s);
+  }
+}
+
+void switch_on(Params& p, const Addition& a) {
+  const Params defaults;
+  for (const Setting& s : a.off) {
+    const ParamInfo* info = s.key.empty() ? nullptr : find_param(s.key);
+    if (info != nullptr) set_value(p, *info, get_value(defaults, *info));
+  }
+  for (const std::string_view need : a.needs) {
+    const Addition* other = need.empty() ? nullptr : find_addition(need);
+    if (other != nullptr) switch_on(p, *other);
+  }
+}
+
+bool is_on(const Params& p, const Addition& a) {
+  for (const Setting& s : a.off) {
+    const ParamInfo* info = s.key.empty() ? nullptr : find_param(s.key);
+    if (info != nullptr && get_value(p, *info) != s.value) return true;
+  }
+  return false;
+}
+
+const Setting* spec_default(std::string_view key) {
+  for (const Setting& s : kSpecDefaults) {
+    if (s.key == key) return &s;
+  }
+  return nullptr;
+}
+
+Params paper_literal() {
+  Params p;
+  for (const Setting& s : kSpecDefaults) set(p, s);
+  for (const Addition& a : kAdditions) switch_off(p, a);
+  return p;
+}
+
+}  // namespace swarmpath::sim
