@@ -51,7 +51,7 @@ const std::array kAdditions{
   Addition{"guided_departure", "the allocated robots follow the founder out", "§2.6 T5, T9", kTa, {{{"guided_departure", 0}}}, {"site_fidelity"}},
   Addition{"share_goal", "the ACK carries where the goal was seen", "§2.6 protocol, T5", kTa, {{{"share_goal", 0}}}, {"site_fidelity"}},
   Addition{"depart_gap", "allocated robots leave one after another", "§2.6 T5", kTa, {{{"depart_gap", 0}}}, {}},
-  Addition{"nest_crowd", "no edge following among the robots at the nest", "§2.1 fields", kTa, {{{"nest_crowd", 0}}}, {"T_trap"}},
+  Addition{"nest_crowd", "no edge following or falling back among the robots at the nest", "§2.1 fields", kBoth, {{{"nest_crowd", 0}}}, {"T_trap"}},
   Addition{"give_way", "resting robots give way to a robot pressing on them", "§2.6 T6", kTa, {{{"give_way", 0}}}, {}},
   Addition{"single_child", "allocated explorers attach only to an unclaimed subgoal", "§2.3 #1", kTa, {{{"single_child", 0}}}, {}},
   Addition{"ta_backoff_spot", "allocated robots back off to the spot toward the nest", "§2.3 #5", kTa, {{{"ta_backoff_spot", 0}}}, {}},

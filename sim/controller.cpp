@@ -37,11 +37,11 @@ SensorNeeds sensor_needs(Mode m) {
   return {};
 }
 
-bool robot_listens(Mode m, const RobotMemory& mem) {
+bool robot_listens(Mode m, const Params& p, const RobotMemory& mem) {
   if (m != Mode::kTaskAllocation) return true;  // the world's needs.rab decides
   return mem.ta.state == TaState::kScout || mem.ta.state == TaState::kGoalFounder ||
-         mem.ta.state == TaState::kDecisionMaker || mem.pf.single_child ||
-         (mem.ta.state == TaState::kRestingTask && mem.ta.hears_calls);
+         mem.ta.state == TaState::kDecisionMaker || claims_links(p, mem.pf) ||
+         (mem.ta.state == TaState::kRestingTask && p.rest_recruit && p.recruit_call);
 }
 
 Led initial_led(Mode m) {

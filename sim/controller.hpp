@@ -52,7 +52,7 @@ SensorNeeds sensor_needs(Mode m);
 
 /// Whether one robot listens to the range-and-bearing medium in its current state, when the world
 /// senses it at all: in task allocation, only scouts, founders and decision makers do.
-bool robot_listens(Mode m, const RobotMemory& mem);
+bool robot_listens(Mode m, const Params& p, const RobotMemory& mem);
 
 /// The LED colour robots show before their first control step.
 Led initial_led(Mode m);

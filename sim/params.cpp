@@ -205,7 +205,7 @@ const std::array kTable{
             "task allocation: an allocated robot waits at the nest this many ticks per robot ACKed after it (the ACK's remaining count), so that the robots leave one after another (0: all at once)",
             "§2.6 T5", {}},
   ParamInfo{ 0, "nest_crowd", R, &P::nest_crowd, 200, 0, 500, 10, "", "cm",
-            "task allocation: within this distance of the nest, crowded with resting and waiting robots, an allocated robot does not follow obstacle edges (robots are not walls) and steers by avoidance and its field alone (0: edge following everywhere)",
+            "within this distance of the nest, crowded in task allocation with resting and waiting robots, an allocated robot does not follow obstacle edges (robots are not walls) and steers by avoidance and its field alone, and no robot going home along its trail falls back to an earlier crumb (0: everywhere)",
             "§2.1 fields", {}},
   ParamInfo{ 0, "give_way", R, &P::give_way, 20, 0, 200, 5, "", "ticks",
             "task allocation: a resting robot whose proximity reading grows past what its static neighbours gave when it settled (a robot pressing through the crowd at the nest) backs away from it at half speed for this many ticks, then returns to its deployment point (0: resting robots never move)",

@@ -75,17 +75,15 @@ struct Params {
   // Behaviours beyond SPEC (additions): each is switched off by the value its help line names, and
   // genomes/paper-literal.toml switches every one off (sim/additions.hpp lists them with their SPEC rule).
   // sensing (SPEC §1.3)
-  bool led_ring =
-      true;  ///< a robot is seen when the line to its centre or to a tangent of its LED ring is clear
+  bool led_ring = true;  ///< a robot is seen when the line to its centre or to its LED ring's edge is clear
   // exploring (SPEC §2.1, §2.3 rows #1, #2)
-  double w_seek = 1.0;        ///< pull of an explorer toward the goal or RED light it sees (0: none)
-  double t_trap = 100;        ///< ticks without progress before edge following and the trail (0: never)
-  double trap_progress = 30;  ///< gain that counts as progress for T_trap [cm]
-  double dead_end_traps = 5;  ///< a following without progress for this many T_trap turns back
-  double t_follow = 2000;     ///< longest edge following [ticks]
-  bool site_fidelity = true;  ///< start an exploration trip toward the last goal/subgoal sighting
-  double travel_cap =
-      3;  ///< row #2: travelling to a sighting ends the trip after this many budgets (0: never)
+  double w_seek = 1.0;              ///< pull of an explorer toward the goal or RED light it sees (0: none)
+  double t_trap = 100;              ///< ticks without progress before edge following and the trail (0: never)
+  double trap_progress = 30;        ///< gain that counts as progress for T_trap [cm]
+  double dead_end_traps = 5;        ///< a following without progress for this many T_trap turns back
+  double t_follow = 2000;           ///< longest edge following [ticks]
+  bool site_fidelity = true;        ///< start an exploration trip toward the last goal/subgoal sighting
+  double travel_cap = 3;            ///< row #2: travel ends the trip after this many budgets (0: never)
   bool blocked_trip_ends = true;    ///< row #2: an edge following that gives up ends the trip
   bool return_finds = true;         ///< row #1h: a robot going home takes the goal it finds within d_detect
   bool return_lured = true;         ///< TA, return_finds: a scout going home turns to the goal it sees
@@ -103,10 +101,8 @@ struct Params {
   bool backoff_spot = false;      ///< forming: back off to the spot d_sub from the target toward the nest
   bool backoff_far_spot = true;   ///< forming: back off to the spot when the goal was found from its far side
   double spot_patience = 300;     ///< spot back-off: ticks without progress, no wall in the way (0: T_trap/4)
-  double spot_crumb_tol =
-      15;  ///< the spot is the crumb of its own way out this near d_sub + 5 cm [cm] (0: none)
-  bool trail_nestward =
-      true;  ///< falling back from the spot, the trail starts nearer the nest than the target
+  double spot_crumb_tol = 15;     ///< the spot: a crumb of its way out this near d_sub + 5 cm [cm] (0: none)
+  bool trail_nestward = true;     ///< from the spot back to its trail: nearer the nest than the target
   // aligning (SPEC §2.4, rows #10-#13) and the chain's links
   bool align_keep_view = true;  ///< rows #10, #13: an aligning robot keeps both references in view
   bool align_taper = true;      ///< §2.4: speed tapers onto P; avoidance only when something is sensed
@@ -128,8 +124,7 @@ struct Params {
   double t_guide_lost = 30;      ///< guided_departure: ticks without a guide before exploring alone
   bool share_goal = true;        ///< T5: the founder's ACK carries where it saw the goal
   double depart_gap = 50;        ///< T5: ticks between departures, in ACK order (0: all at once)
-  double nest_crowd =
-      200;               ///< allocated robots do not edge-follow this close to the nest [cm] (0: everywhere)
+  double nest_crowd = 200;  ///< no edge following (allocated) nor trail fall-back this near the nest [cm]
   double give_way = 20;  ///< T6: a resting robot pressed by another backs away this long [ticks] (0: never)
   bool single_child = true;      ///< row #1 (TA): allocated explorers attach only to an unclaimed subgoal
   bool ta_backoff_spot = true;   ///< TA: allocated robots back off to the spot toward the nest

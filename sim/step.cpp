@@ -29,15 +29,15 @@ namespace {
 
 // Robot i's readings: the Percept's fixed part, its blobs and RAB messages appended to the buffers
 // (its spans are set by the caller, once the buffers have stopped growing).
-void sense_robot(const SensorView& view, const World& w, std::size_t i, Percept& in, std::vector<Blob>& blobs,
-                 std::vector<RabMessage>& inbox) {
+void sense_robot(const SensorView& view, const Params& p, const World& w, std::size_t i, Percept& in,
+                 std::vector<Blob>& blobs, std::vector<RabMessage>& inbox) {
   const int id = static_cast<int>(i);
   in.tick = w.tick;
   in.id = id;
   in.pose = w.poses[i];
   if (w.needs.proximity) sense_proximity(view, id, in.proximity);
   if (w.needs.camera) sense_camera(view, id, blobs);
-  if (w.needs.rab && robot_listens(w.mode, w.memory[i])) sense_rab(view, id, inbox);
+  if (w.needs.rab && robot_listens(w.mode, p, w.memory[i])) sense_rab(view, id, inbox);
 }
 
 }  // namespace
@@ -53,7 +53,7 @@ void sense_all(const Scenario& s, const Params& p, World& w) {
   for (std::size_t i = 0; i < n; ++i) {
     w.blob_begin[i] = w.blobs.size();
     w.rab_begin[i] = w.rab_inbox.size();
-    sense_robot(view, w, i, w.percepts[i], w.blobs, w.rab_inbox);
+    sense_robot(view, p, w, i, w.percepts[i], w.blobs, w.rab_inbox);
   }
   w.blob_begin[n] = w.blobs.size();
   w.rab_begin[n] = w.rab_inbox.size();
@@ -75,7 +75,7 @@ void sense_and_control_all(const Scenario& s, const Params& p, World& w) {
   for (std::size_t i = 0; i < w.poses.size(); ++i) {
     w.blobs.clear();
     w.rab_inbox.clear();
-    sense_robot(view, w, i, in, w.blobs, w.rab_inbox);
+    sense_robot(view, p, w, i, in, w.blobs, w.rab_inbox);
     in.blobs = w.blobs;
     in.rab = w.rab_inbox;
     w.commands[i] = control(w.mode, in, p, w.memory[i]);

@@ -82,14 +82,22 @@ Vec2 follow_edge(const Percept& in, int side) {
   return (1.0 / norm(v)) * v;
 }
 
+namespace {
+
+// no progress for `trap` ticks and no edge following under way: the field has trapped the robot
+// (checked one tick ahead of nav_update, which would start edge following at T_trap)
+bool trapped(const NavMemory& nav, const Params& p, double trap) {
+  return nav.following == 0 && p.t_trap > 0 && static_cast<double>(nav.stalled) + 1.0 >= trap;
+}
+
+}  // namespace
+
 Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest,
               double trap_ticks, const Vec2* field_point, double trail_within) {
   const double trap = trap_ticks > 0.0 ? trap_ticks : p.t_trap;
   // trapped by the field with a trail to retrace: switch to the trail for the rest of the way
-  // (checked one tick ahead of nav_update, which would start edge following at T_trap)
   if (!nav.on_trail) trail.touch(in.pose.p);
-  if (p.trail_home && !nav.on_trail && nav.following == 0 && !trail.empty() && p.t_trap > 0 &&
-      static_cast<double>(nav.stalled) + 1.0 >= trap) {
+  if (p.trail_home && !nav.on_trail && !trail.empty() && trapped(nav, p, trap)) {
     nav.on_trail = true;
     trail.start_home_within(in.pose.p, nest, trail_within);
     nav.stalled = 0;
@@ -98,8 +106,7 @@ Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trai
   if (!nav.on_trail) return nav_toward(in, p, nav, rng, field_point != nullptr ? *field_point : nest);
   // stuck on the way to the crumb nearest it (behind a wall?), away from the nest's crowd: back to
   // a crumb it has been at, and home along the trail from there (once per leg)
-  if (!nav.fell_back && nav.following == 0 && p.t_trap > 0 &&
-      static_cast<double>(nav.stalled) + 1.0 >= trap && 100.0 * dist(in.pose.p, nest) > p.nest_crowd) {
+  if (!nav.fell_back && trapped(nav, p, trap) && 100.0 * dist(in.pose.p, nest) > p.nest_crowd) {
     nav.fell_back = true;
     if (trail.fall_back()) {
       nav.stalled = 0;
@@ -108,8 +115,7 @@ Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trai
   }
   // a crumb it cannot get to (a robot stands on it: chain robots stop where explorers walked) is
   // passed over after T_trap ticks without progress
-  if (p.skip_blocked_crumbs && nav.following == 0 && p.t_trap > 0 && !trail.empty() &&
-      static_cast<double>(nav.stalled) + 1.0 >= trap) {
+  if (p.skip_blocked_crumbs && !trail.empty() && trapped(nav, p, trap)) {
     trail.skip();
     nav.stalled = 0;
     nav.best = -1e18;

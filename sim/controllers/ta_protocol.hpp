@@ -206,6 +206,22 @@ void for_each_claim_heard(std::span<const RabMessage> inbox, F&& f) {
 /// `me` (SPEC §2.6 T8); returns its id or kBroadcastId.
 std::uint8_t senior_founder_heard(FounderRank me, std::span<const RabMessage> inbox, bool seniority = false);
 
+/// The ALLOC_DONE flag a robot out of the allocation broadcasts (SPEC §2.6 T6), in TA state `state`.
+inline TaMessage alloc_done_message(std::uint8_t my_id, std::uint8_t state) {
+  TaMessage m;
+  m.id = my_id;
+  m.state = state;
+  m.flags = kFlagAllocDone;
+  return m;
+}
+
+/// `cmd` with `m` on the medium this tick.
+inline Command say(Command cmd, const TaMessage& m) {
+  cmd.rab_send = true;
+  cmd.rab = encode(m);
+  return cmd;
+}
+
 /// SPEC §2.7: n = ceil(l/v + delta) clamped to [n_min, N], l = s t [cm], v = R_vis [cm].
 int robots_needed(double t_seconds, double speed_cm_s, double r_vis_cm, double delta, int n_min, int swarm);
 

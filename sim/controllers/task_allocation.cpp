@@ -5,10 +5,16 @@
 #include <array>
 #include <cmath>
 
+#include "chain_links.hpp"
+#include "colours.hpp"
+#include "exploring.hpp"
+#include "forming.hpp"
 #include "navigation.hpp"
 #include "path_formation.hpp"
+#include "resting.hpp"
 #include "sim/controller.hpp"
 #include "sim/motion.hpp"
+#include "transition_table.hpp"
 
 namespace swarmpath::sim {
 
@@ -44,10 +50,8 @@ double delta_for(const Params& p, std::uint8_t env_class) {
 }
 
 void ta_init(RobotMemory& mem, const Params& p) {
-  pf_init(mem.pf, p);
-  mem.pf.scout = true;
+  pf_init(mem.pf, p, PfRole::kScout);
   mem.ta = TaMemory{};
-  mem.ta.hears_calls = p.rest_recruit && p.recruit_call;
 }
 
 namespace {
@@ -56,22 +60,6 @@ namespace {
 constexpr double kTicksPerSecond = 10.0;
 
 double seconds(double ticks) { return ticks / kTicksPerSecond; }
-
-bool is_path_robot_colour(const Blob& b) {  // SPEC §2.6 T7
-  if (b.emitter < 0) return false;          // the nest beacon is blue too
-  switch (b.color) {
-    case Led::kWhite:
-    case Led::kRed:
-    case Led::kMagenta:
-    case Led::kBlue:
-    case Led::kPurple:
-    case Led::kBrown:
-    case Led::kOrange:
-      return true;
-    default:
-      return false;
-  }
-}
 
 // ---- guards ----
 
@@ -92,7 +80,7 @@ bool senior_founder(const TaContext& c) {  // T8 [R]: duplicate founders
   return c.sight.senior_founder != kBroadcastId;
 }
 
-bool late_founder(const TaContext& c) {  // a founder that hears ALLOC_DONE before it allocates
+bool late_founder(const TaContext& c) {  // T7f [R late_founder_rests]: ALLOC_DONE heard before allocating
   return c.p.late_founder_rests && !c.m.protocol_started && c.sight.alloc_done_heard && !c.m.refounder;
 }
 
@@ -101,7 +89,9 @@ bool founder_done_and_counts_self(const TaContext& c) {  // T9
          c.p.founder_counts_self;
 }
 
-bool founder_done(const TaContext& c) {  // T9, the founder not counting itself
+// T9r: a founder that does not count itself (founder_counts_self false, SPEC row 39) rests when done,
+// as a decision maker that was not ACKed does (T6): SPEC's T9 gives it no next state
+bool founder_done(const TaContext& c) {
   return c.m.protocol_started && c.m.protocol.finished(static_cast<int>(c.p.t_done));
 }
 
@@ -133,34 +123,29 @@ void become_founder(const TaContext& c, RobotMemory& mem) {
                            static_cast<int>(c.p.n_min), c.swarm);
 }
 
-// INITIATE_TASK: path formation, exploring for kappa t_founder (SPEC §2.7)
+// INITIATE_TASK: path formation as an allocated robot, exploring for kappa t_founder (SPEC §2.7)
 void start_path_formation(const TaContext& c, RobotMemory& mem, double t_founder_s) {
   const PfMemory keep = mem.pf;  // the founder keeps its sighting of the goal (site fidelity)
-  pf_init(mem.pf, c.p);
+  pf_init(mem.pf, c.p, PfRole::kAllocated);
   mem.pf.t_explore = std::max(1.0, c.p.kappa * t_founder_s * kTicksPerSecond);
   mem.pf.sighting = keep.sighting;
   mem.pf.has_sighting = keep.has_sighting;
-  mem.pf.to_sighting = c.p.site_fidelity && keep.has_sighting;
+  mem.pf.explore_leg = first_leg(c.p, mem.pf);
   mem.pf.trip_start = c.in.tick;
-  mem.pf.single_child = c.p.single_child;
-  mem.pf.backoff_spot = c.p.ta_backoff_spot;
-  mem.pf.seek_tip = c.p.single_child && c.p.seek_tip;
-  mem.pf.bypass = c.p.single_child && c.p.chain_bypass;
-  mem.pf.nest_crowd_cm = c.p.nest_crowd;
-  mem.pf.call_links = c.p.single_child && c.p.rest_recruit && c.p.recruit_call;
   mem.trail.reset(c.in.pose.p);
 }
 
 // guided departure [R]: the founder leads the allocated robots back to the goal
 void founder_initiates(const TaContext& c, RobotMemory& mem) {
   start_path_formation(c, mem, mem.ta.t_founder_s);
-  mem.pf.guide = c.p.guided_departure && mem.pf.to_sighting;
+  if (c.p.guided_departure && mem.pf.explore_leg == ExploreLeg::kToSighting)
+    mem.pf.explore_leg = ExploreLeg::kLead;
 }
 
 void dm_initiates(const TaContext& c, RobotMemory& mem) {
   const TaMessage& ack = c.sight.dm.ack;
   start_path_formation(c, mem, static_cast<double>(ack.t_founder_ds));
-  mem.pf.follow_guide = c.p.guided_departure;
+  bool to_sighting = mem.pf.explore_leg == ExploreLeg::kToSighting;
   // R: the robots ACKed later (fewer remaining) leave first, depart_gap ticks apart
   mem.ta.depart_tick = c.in.tick + static_cast<std::int64_t>(std::llround(c.p.depart_gap * ack.remaining));
   if (c.p.share_goal && ack.has_goal()) {
@@ -168,7 +153,12 @@ void dm_initiates(const TaContext& c, RobotMemory& mem) {
     mem.pf.sighting =
         mem.nest + 0.01 * Vec2{static_cast<double>(ack.goal_x_cm), static_cast<double>(ack.goal_y_cm)};
     mem.pf.has_sighting = true;
-    mem.pf.to_sighting = c.p.site_fidelity;
+    to_sighting = c.p.site_fidelity;
+  }
+  if (c.p.guided_departure) {
+    mem.pf.explore_leg = to_sighting ? ExploreLeg::kFollowThenSighting : ExploreLeg::kFollowThenWalk;
+  } else {
+    mem.pf.explore_leg = to_sighting ? ExploreLeg::kToSighting : ExploreLeg::kWalk;
   }
 }
 
@@ -183,7 +173,7 @@ void join_chain_end(const TaContext& c, RobotMemory& mem) {
   const RabMessage& call = *c.sight.call;
   mem.pf.sighting = c.in.pose.p + (call.range_cm / 100.0) * c.in.pose.to_world(unit(call.bearing()));
   mem.pf.has_sighting = true;
-  mem.pf.to_sighting = true;
+  mem.pf.explore_leg = ExploreLeg::kToSighting;
   mem.pf.answering = call.sender;
 }
 
@@ -203,7 +193,9 @@ void refound(const TaContext& c, RobotMemory& mem) {
 
 // clang-format off
 // SPEC §2.6, in its order; T1 (explore / return / rest) runs inside the scout's path-formation
-// states, T4 (the founder at the nest runs the protocol) inside the founder's behaviour.
+// states, T4 (the founder at the nest runs the protocol) inside the founder's behaviour. Rows with a
+// letter or a number past 9 are [R] (docs/CHOICES.md): T7f late_founder_rests, T10 rest_recruit and
+// recruit_call, T11-T12 refound_starved.
 const std::array<TaTransition, 12> kTable{{
   {TaState::kScout,         found_the_goal,               TaState::kGoalFounder,   become_founder,    "T2",  "c"},
   {TaState::kScout,         allocation_over,              TaState::kRestingTask,   nullptr,           "T7",  "d"},
@@ -221,60 +213,6 @@ const std::array<TaTransition, 12> kTable{{
 
 // clang-format on
 
-// To `point` (the nest: along the robot's trail once the field traps it) and stop within reach.
-Command drive_to(const Percept& in, const Params& p, RobotMemory& mem, Vec2 point, double stop_within_cm,
-                 Led led) {
-  Command cmd;
-  cmd.led = led;
-  if (100.0 * dist(in.pose.p, point) <= stop_within_cm) return cmd;
-  const Vec2 f = point == mem.nest ? nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest)
-                                   : nav_toward(in, p, mem.nav, mem.rng, point);
-  const Vec2 v = p.v_max * with_avoidance(in, p, mem.nav, f);
-  return drive_command(v, p, mem.turn, led);
-}
-
-// give_way [R]: the resting robots stand at 20 cm spacing around the nest, a maze with gaps
-// narrower than a robot; one pressed by a robot passing through (its proximity vector longer
-// than when it settled) backs away from it, then drive_to brings it back.
-void watch_for_pressing(const Percept& in, const Params& p, RobotMemory& mem) {
-  TaMemory& m = mem.ta;
-  const bool home = 100.0 * dist(in.pose.p, mem.start) <= p.d_arrive;
-  const Vec2 touch = proximity_vector(in.proximity);
-  const double len = norm(touch);
-  if (!m.settled) {
-    m.settled = home;
-    m.touch_base = len;
-    return;
-  }
-  constexpr double kPressed = 0.1;  // growth of the reading that means a robot pressing
-  if (m.give_way == 0 && p.give_way > 0.0 && len > m.touch_base + kPressed) {
-    m.give_way = static_cast<std::int64_t>(p.give_way);
-    m.give_dir = (-1.0 / len) * touch;
-    m.settled = false;
-  }
-}
-
-Command give_way(const Params& p, RobotMemory& mem) {
-  --mem.ta.give_way;
-  return drive_command(0.5 * p.v_max * mem.ta.give_dir, p, mem.turn, Led::kBlack);
-}
-
-// recruit_call [R]: the nearest subgoal calling for a link that no robot on the medium claims
-const RabMessage* unanswered_call(std::span<const RabMessage> inbox) {
-  IdSet claimed;
-  for_each_claim_heard(inbox, [&](int, int named) {
-    if (named >= 0 && named <= 255) claimed.insert(static_cast<std::uint8_t>(named));
-  });
-  const RabMessage* best = nullptr;
-  for (const RabMessage& r : inbox) {
-    const TaMessage m = decode(r.data);
-    if (!m.needs_link() || claimed_emitter(m) == kNobody || r.sender < 0 || r.sender > 255) continue;
-    if (claimed.contains(static_cast<std::uint8_t>(r.sender))) continue;
-    if (best == nullptr || r.range_cm < best->range_cm) best = &r;
-  }
-  return best;
-}
-
 bool joined(std::uint8_t founder, std::span<const RabMessage> inbox) {
   for (const RabMessage& r : inbox) {
     const TaMessage m = decode(r.data);
@@ -283,30 +221,47 @@ bool joined(std::uint8_t founder, std::span<const RabMessage> inbox) {
   return false;
 }
 
-Command say(Command cmd, const TaMessage& m) {
-  cmd.rab_send = true;
-  cmd.rab = encode(m);
-  return cmd;
-}
-
-TaMessage alloc_done_flag(std::uint8_t id, TaState s) {
-  TaMessage m;
-  m.id = id;
-  m.state = static_cast<std::uint8_t>(s);
-  m.flags = kFlagAllocDone;
-  return m;
+// GOAL_FOUNDER (LED cyan): back to the nest (TA c / PF k); there it runs the protocol (T4)
+Command found(const Percept& in, const Params& p, RobotMemory& mem, int swarm, bool at_nest) {
+  TaMemory& m = mem.ta;
+  const auto id = static_cast<std::uint8_t>(in.id);
+  const Command cmd = drive_to(in, p, mem, mem.nest, p.founder_wait * p.r_nest_reach, Led::kCyan);
+  if (at_nest && !m.protocol_started) {
+    m.protocol_started = true;
+    // refound_starved: n from the trip home (Eq. 1-3 with t its time, whatever t_source says, and
+    // delta_refound)
+    if (m.refounder) {
+      m.t_founder_s = seconds(static_cast<double>(in.tick - mem.pf.trip_start));
+      m.n = robots_needed(m.t_founder_s, p.v_max, p.r_vis, p.delta_refound, static_cast<int>(p.n_min), swarm);
+    }
+    m.protocol = start_founder(m.n - (p.founder_counts_self ? 1 : 0));
+  }
+  if (!m.protocol_started) return m.refounder ? say(cmd, fetch_message(id, m.left_parent)) : cmd;
+  // no JOIN for T_founder_wait ticks: nobody is left to ask; allocate what it has [R]
+  m.waited = m.protocol.remaining > 0 && !joined(id, in.rab) ? m.waited + 1 : 0;
+  if (p.t_founder_wait > 0.0 && static_cast<double>(m.waited) >= p.t_founder_wait) m.protocol.remaining = 0;
+  const auto t = static_cast<std::uint16_t>(std::min(65535.0, std::round(m.t_founder_s)));
+  TaMessage msg = founder_tick(m.protocol, id, t, in.rab, p.resend_lost_ack);
+  if (p.share_goal && mem.pf.has_sighting) {  // R: its messages (the ACK) tell where it saw the goal
+    const Vec2 rel = 100.0 * (mem.pf.sighting - mem.nest);
+    msg.flags = static_cast<std::uint8_t>(msg.flags | kFlagGoal);
+    constexpr double kFar = 1e9;  // [cm] far beyond any arena (kMaxArenaSide); encode clamps it
+    msg.goal_x_cm = static_cast<std::int32_t>(std::clamp(std::round(rel.x), -kFar, kFar));
+    msg.goal_y_cm = static_cast<std::int32_t>(std::clamp(std::round(rel.y), -kFar, kFar));
+  }
+  if (m.refounder) msg.flags = static_cast<std::uint8_t>(msg.flags | kFlagRecall);
+  if (msg.type == MsgType::kDone && m.protocol.done_ticks == 1) {
+    m.alloc_done_tick = in.tick;
+    m.allocated = m.protocol.acks + (p.founder_counts_self ? 1 : 0);
+  }
+  return say(cmd, msg);
 }
 
 }  // namespace
 
 std::span<const TaTransition> ta_transitions() { return kTable; }
 
-std::uint8_t ta_row_number(std::string_view row) {
-  for (std::size_t i = 0; i < kTable.size(); ++i) {
-    if (kTable[i].row == row) return static_cast<std::uint8_t>(i + 1);
-  }
-  return 0;
-}
+std::uint8_t ta_row_number(std::string_view row) { return row_number(ta_transitions(), row); }
 
 void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaSight& sight) {
   sight = TaSight{};
@@ -316,7 +271,7 @@ void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaS
   for (const Blob& b : in.blobs) {
     if (b.emitter == kGoalEmitter && b.distance_cm <= p.d_detect) sight.goal_found = true;
     if (b.emitter >= 0 && (b.color == Led::kCyan || b.color == Led::kGray80)) sight.founder_or_dm_seen = true;
-    if (is_path_robot_colour(b)) sight.path_colour_seen = true;
+    if (b.emitter >= 0 && is_path_colour(b.color)) sight.path_colour_seen = true;  // T7 (not the nest beacon)
   }
   const auto id = static_cast<std::uint8_t>(in.id);
   for (const RabMessage& r : in.rab) {
@@ -338,7 +293,7 @@ void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaS
   if (mem.ta.state == TaState::kRestingTask)
     sight.dm = p.refound_starved && mem.ta.arrived ? resting_tick(id, in.rab, p.founder_seniority) : DmTick{};
   const PfMemory& pf = mem.pf;
-  sight.left_alone = p.refound_starved && mem.ta.state == TaState::kPathFormation && pf.call_links &&
+  sight.left_alone = p.refound_starved && mem.ta.state == TaState::kPathFormation && calls_links(p, pf) &&
                      pf.state == PfState::kSubgoal && pf.parent.valid() &&
                      static_cast<double>(pf.unclaimed) >= p.t_refound && in.tick >= pf.help_until;
 }
@@ -371,7 +326,6 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
   const TaContext c{in, p, m, sight, swarm};
   if (ta_transition(c, mem) != nullptr) nav_reset(mem.nav);
   ++m.t_state;
-  const auto id = static_cast<std::uint8_t>(in.id);
   const bool at_nest = sight.nest_distance_cm <= p.r_nest_reach;
 
   Command cmd;
@@ -388,42 +342,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
       cmd = path_formation_step(in, p, mem);
       break;
     case TaState::kGoalFounder:
-      // back to the nest (TA c / PF k); there it runs the protocol (T4)
-      cmd = drive_to(in, p, mem, mem.nest, p.founder_wait * p.r_nest_reach, Led::kCyan);
-      if (at_nest && !m.protocol_started) {
-        m.protocol_started = true;
-        // refound_starved: n from the trip home (Eq. 1-3 with t its time, whatever t_source says, and
-        // delta_refound)
-        if (m.refounder) {
-          m.t_founder_s = seconds(static_cast<double>(in.tick - mem.pf.trip_start));
-          m.n = robots_needed(m.t_founder_s, p.v_max, p.r_vis, p.delta_refound, static_cast<int>(p.n_min),
-                              swarm);
-        }
-        m.protocol = start_founder(m.n - (p.founder_counts_self ? 1 : 0));
-      }
-      if (m.protocol_started) {
-        // no JOIN for T_founder_wait ticks: nobody is left to ask; allocate what it has [R]
-        m.waited = m.protocol.remaining > 0 && !joined(id, in.rab) ? m.waited + 1 : 0;
-        if (p.t_founder_wait > 0.0 && static_cast<double>(m.waited) >= p.t_founder_wait)
-          m.protocol.remaining = 0;
-        const auto t = static_cast<std::uint16_t>(std::min(65535.0, std::round(m.t_founder_s)));
-        TaMessage msg = founder_tick(m.protocol, id, t, in.rab, p.resend_lost_ack);
-        if (p.share_goal && mem.pf.has_sighting) {  // R: its messages (the ACK) tell where it saw the goal
-          const Vec2 rel = 100.0 * (mem.pf.sighting - mem.nest);
-          msg.flags = static_cast<std::uint8_t>(msg.flags | kFlagGoal);
-          constexpr double kFar = 1e9;  // [cm] far beyond any arena (kMaxArenaSide); encode clamps it
-          msg.goal_x_cm = static_cast<std::int32_t>(std::clamp(std::round(rel.x), -kFar, kFar));
-          msg.goal_y_cm = static_cast<std::int32_t>(std::clamp(std::round(rel.y), -kFar, kFar));
-        }
-        if (m.refounder) msg.flags = static_cast<std::uint8_t>(msg.flags | kFlagRecall);
-        if (msg.type == MsgType::kDone && m.protocol.done_ticks == 1) {
-          m.alloc_done_tick = in.tick;
-          m.allocated = m.protocol.acks + (p.founder_counts_self ? 1 : 0);
-        }
-        cmd = say(cmd, msg);
-      } else if (m.refounder) {
-        cmd = say(cmd, fetch_message(id, m.left_parent));
-      }
+      cmd = found(in, p, mem, swarm, at_nest);
       break;
     case TaState::kDecisionMaker:
       // gather at the nest; answer a requesting founder with JOIN
@@ -432,12 +351,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
       if (sight.dm.send.type == MsgType::kJoin) cmd = say(cmd, sight.dm.send);
       break;
     case TaState::kRestingTask:
-      // back to its own deployment point with the field of Eq. (4)-(5), then rest, LEDs off
-      cmd = m.give_way > 0 ? give_way(p, mem) : drive_to(in, p, mem, mem.start, p.d_arrive, Led::kBlack);
-      m.arrived = m.arrived || 100.0 * dist(in.pose.p, mem.start) <= p.d_arrive;
-      watch_for_pressing(in, p, mem);
-      // refound_starved: JOIN a founder allocating from the resting robots (T11)
-      cmd = say(cmd, sight.dm.send.type == MsgType::kJoin ? sight.dm.send : alloc_done_flag(id, m.state));
+      cmd = rest(in, p, mem, sight);
       break;
   }
   mem.state = static_cast<std::uint8_t>(static_cast<int>(m.state) * 16 + static_cast<int>(mem.pf.state));

@@ -54,7 +54,6 @@ struct TaMemory {
   Vec2 give_dir;              ///< the way it backs away, robot frame
   std::int64_t end_seen = 0;  ///< rest_recruit [R]: consecutive ticks a chain's end has been in view
   std::int64_t end_wait = 0;  ///< rest_recruit: ticks it waits before joining (T_recruit + a draw)
-  bool hears_calls = false;   ///< recruit_call: listens to the medium while resting [R]
   // refound_starved [R]: a chain's end gone home to allocate the rest of the path's robots
   bool refounder = false;
   int left_parent = kNobody;  ///< the subgoal it left (told with fetch messages on its way)

@@ -11,6 +11,7 @@
 
 #include "sim/controller.hpp"
 #include "sim/controllers/alignment.hpp"
+#include "sim/controllers/forming.hpp"
 #include "sim/controllers/ta_protocol.hpp"
 
 namespace swarmpath::sim {
@@ -55,6 +56,7 @@ std::string fire(PfMemory& m, const Reading& r, const Params& p = {}, bool on_tr
   const Percept in = r.percept();
   PfSight sight;
   pf_perceive(in, p, kNest, m, sight);
+  if (m.state == PfState::kSubgoalForming) next_form_leg(in, p, kNest, m);
   const PfContext c{in, p, m, sight, kNest, on_trail};
   const PfTransition* row = pf_transition(c, m);
   return row ? std::string(row->row) : std::string();
@@ -93,7 +95,7 @@ TEST(PfTable, Row1FindsARedSubgoal) {
 // R: single_child (task allocation): an allocated explorer attaches only to what no robot claims
 TEST(PfTable, Row1SingleChildSkipsAClaimedGoalOrSubgoal) {
   PfMemory m = in_state(PfState::kExploring);
-  m.single_child = true;
+  m.role = PfRole::kAllocated;  // single_child applies to allocated robots
   Reading r;
   r.add(Led::kYellow, kGoalEmitter, 10, 25);
   r.add(Led::kWhite, 9, 180, 60, kGoalEmitter);  // robot 9 forms from the goal: claimed by sight
@@ -118,12 +120,17 @@ TEST(PfTable, Row1SingleChildSkipsAClaimedGoalOrSubgoal) {
 }
 
 // R: chain_bypass. A RED subgoal with the option on and `parent` 70 cm ahead
-PfMemory bypassing_subgoal(int parent, bool bypass = true) {
+PfMemory bypassing_subgoal(int parent) {
   PfMemory m = in_state(PfState::kSubgoal);
-  m.single_child = true;
-  m.bypass = bypass;
+  m.role = PfRole::kAllocated;
   m.parent = tracked(parent, {0.7, 0.0});
   return m;
+}
+
+Params with_bypass() {
+  Params p;
+  p.chain_bypass = true;
+  return p;
 }
 
 // R: chain_bypass. Subgoal 3 (me) has parent 7, whose light names 5 as its parent; 5 stands 60 cm
@@ -133,7 +140,7 @@ TEST(PfTable, Row15ASubgoalSkipsAParentWhoseParentIsWithinReach) {
   Reading r;
   r.add(Led::kRed, 7, 0, 70, 5);
   r.add(Led::kRed, 5, 60, 60, 2);
-  EXPECT_EQ(fire(m, r), "#15");
+  EXPECT_EQ(fire(m, r, with_bypass()), "#15");
   EXPECT_EQ(m.state, PfState::kSubgoal);
   EXPECT_EQ(m.parent.id, 5);
   // beyond d_sub + 10 cm, or without the option, the chain stays as it is
@@ -141,16 +148,16 @@ TEST(PfTable, Row15ASubgoalSkipsAParentWhoseParentIsWithinReach) {
   Reading out;
   out.add(Led::kRed, 7, 0, 70, 5);
   out.add(Led::kRed, 5, 60, 85, 2);
-  EXPECT_EQ(fire(far, out), "");
-  PfMemory off = bypassing_subgoal(7, false);
-  EXPECT_EQ(fire(off, r), "");
+  EXPECT_EQ(fire(far, out, with_bypass()), "");
+  PfMemory off = bypassing_subgoal(7);
+  EXPECT_EQ(fire(off, r, Params{}), "");
   // 5 names 7 as its parent: 7 and 5 form a loop, and following it would flip for ever
   PfMemory loop = bypassing_subgoal(7);
   Reading cycle;
   cycle.add(Led::kRed, 7, 0, 70, 5);
   cycle.add(Led::kRed, 5, 60, 60, 7);
   cycle.add(Led::kRed, 11, 180, 70, kMe);  // my child: I am not left out (row 16)
-  EXPECT_EQ(fire(loop, cycle), "");
+  EXPECT_EQ(fire(loop, cycle, with_bypass()), "");
 }
 
 // R: chain_bypass. I (3) am RED with parent 5; my child 8 now names 5 as its parent and nobody
@@ -165,17 +172,17 @@ TEST(PfTable, Row16ASkippedSubgoalLeavesTheChain) {
   r.add(Led::kRed, 9, 90, 95, 8);
   PfMemory two = m;
   two.claimants.add(12);  // a second child, out of sight this tick
-  EXPECT_EQ(fire(two, r), "");
+  EXPECT_EQ(fire(two, r, with_bypass()), "");
   PfMemory stranger = bypassing_subgoal(5);  // 8 was never my child: a sibling, not a bypass
-  EXPECT_EQ(fire(stranger, r), "");
-  EXPECT_EQ(fire(m, r), "#16");
+  EXPECT_EQ(fire(stranger, r, with_bypass()), "");
+  EXPECT_EQ(fire(m, r, with_bypass()), "#16");
   EXPECT_EQ(m.state, PfState::kReturnToNest);
   EXPECT_FALSE(m.parent.valid());
   PfMemory kept = bypassing_subgoal(5);
   kept.claimants.add(8);
   Reading child = r;
   child.add(Led::kRed, 11, 180, 70, kMe);  // robot 11 names me as its parent
-  EXPECT_EQ(fire(kept, child), "");
+  EXPECT_EQ(fire(kept, child, with_bypass()), "");
 }
 
 TEST(PfTable, Row2ExplorationBudgetSpent) {  // label b
@@ -228,7 +235,7 @@ TEST(PfTable, Row4RestOverGrowsTheBudget) {  // label i
 PfMemory forming(Vec2 target_at) {
   PfMemory m = in_state(PfState::kSubgoalForming);
   m.target = tracked(7, target_at);
-  m.target_reached = true;
+  m.form_leg = FormLeg::kBackOff;  // it has been at its target
   return m;
 }
 
@@ -278,7 +285,7 @@ TEST(PfTable, Row5rRetargetsToTheSubgoalNearerTheNest) {  // label c while formi
   EXPECT_EQ(fire(m, r), "#5r");
   EXPECT_EQ(m.state, PfState::kSubgoalForming);
   EXPECT_EQ(m.target.id, 8);
-  EXPECT_FALSE(m.target_reached);  // walks to it first
+  EXPECT_EQ(m.form_leg, FormLeg::kToTarget);  // walks to it first
 }
 
 TEST(PfTable, Row6aReachedTheNestBeforeDsub) {
@@ -305,7 +312,7 @@ TEST(PfTable, Row6bStopsInTheRecoveryRange) {
 
 TEST(PfTable, Row7aStopsWhereTheTargetWasLastInView) {
   PfMemory m = forming({0.60, 0.0});
-  m.to_view_edge = true;
+  m.form_leg = FormLeg::kToViewEdge;
   m.last_saw_target = {0.0, 0.0};
   EXPECT_EQ(fire(m, Reading{}), "#7a");
   EXPECT_EQ(m.state, PfState::kSubgoal);
@@ -421,7 +428,7 @@ TEST(PfTable, Row13CountsALossOnceBackWhereTheAlignmentBegan) {
     m = aligning(PfState::kOpt2, r);
     r.blobs.erase(r.blobs.begin());
     m.parent.unseen = 2;
-    m.view_limited = true;
+    m.align_leg = AlignLeg::kBackToStart;
     m.safe_pos = start;
   };
   Reading r;
@@ -579,7 +586,7 @@ TEST(PfTable, OneAtATimeWaitsWhileARobotIsForming) {  // [R] form_one_at_a_time
 // guided departure [R]: an allocated robot's first trip follows the CYAN lights
 RobotMemory follower() {
   RobotMemory mem = init_memory(Mode::kPathFormation, kMe, {{0.0, 0.0}, 1.0, 0.0}, kNest, Params{}, 1);
-  mem.pf.follow_guide = true;
+  mem.pf.explore_leg = ExploreLeg::kFollowThenWalk;
   return mem;
 }
 
@@ -612,21 +619,20 @@ TEST(GuidedDeparture, ExploresAloneAfterTGuideLostOrOnSeeingTheGoal) {
     EXPECT_EQ(path_formation_step(Reading{}.percept(), p, mem).led, Led::kCyan) << t;
   }
   EXPECT_EQ(path_formation_step(Reading{}.percept(), p, mem).led, Led::kGreen);
-  EXPECT_FALSE(mem.pf.follow_guide);
+  EXPECT_EQ(mem.pf.explore_leg, ExploreLeg::kWalk);
   RobotMemory lured = follower();
   Reading r;
   r.add(Led::kCyan, 21, 0, 60, 0);
   r.add(Led::kYellow, kGoalEmitter, 30, 80);  // the goal in view beats the guide
   EXPECT_EQ(path_formation_step(r.percept(), p, lured).led, Led::kGreen);
-  EXPECT_FALSE(lured.pf.follow_guide);
+  EXPECT_EQ(lured.pf.explore_leg, ExploreLeg::kWalk);
 }
 
 // R: seek_tip (task allocation). An allocated explorer that sees a robot forming the next link
 // and no free subgoal walks to it and waits tip_hover away for the free subgoal it will become.
-RobotMemory tip_seeker(bool seek_tip) {
+RobotMemory tip_seeker() {
   RobotMemory mem = init_memory(Mode::kPathFormation, kMe, {{0.0, 0.0}, 1.0, 0.0}, kNest, Params{}, 1);
-  mem.pf.single_child = true;
-  mem.pf.seek_tip = seek_tip;
+  mem.pf.role = PfRole::kAllocated;  // single_child and seek_tip apply to allocated robots
   return mem;
 }
 
@@ -635,18 +641,20 @@ TEST(SeekTip, WalksToTheRobotFormingTheNextLinkAndWaitsBesideIt) {
   Reading left;
   left.add(Led::kWhite, 9, 90, 90, 8);  // robot 9 forms from subgoal 8, on the left
   left.add(Led::kRed, 8, 60, 95, 7);    // claimed by 9: no lure
-  RobotMemory walker = tip_seeker(true);
+  RobotMemory walker = tip_seeker();
   const Command walk = path_formation_step(left.percept(), p, walker);
   EXPECT_EQ(walker.pf.state, PfState::kExploring);
   EXPECT_GT(walk.right_cm_s, walk.left_cm_s);  // turning left, toward robot 9
   Reading beside;
   beside.add(Led::kWhite, 9, 0, p.tip_hover, 8);  // straight ahead, tip_hover away
-  RobotMemory waiter = tip_seeker(true);
+  RobotMemory waiter = tip_seeker();
   const Command wait = path_formation_step(beside.percept(), p, waiter);
   EXPECT_NEAR(wait.left_cm_s, 0.0, 1e-9);
   EXPECT_NEAR(wait.right_cm_s, 0.0, 1e-9);
-  RobotMemory explorer = tip_seeker(false);  // without seek_tip it explores on (SPEC row 2)
-  const Command on = path_formation_step(beside.percept(), p, explorer);
+  RobotMemory explorer = tip_seeker();  // without seek_tip it explores on (SPEC row 2)
+  Params no_tip;
+  no_tip.seek_tip = false;
+  const Command on = path_formation_step(beside.percept(), no_tip, explorer);
   EXPECT_GT(std::abs(on.left_cm_s) + std::abs(on.right_cm_s), 1.0);
 }
 
@@ -655,8 +663,7 @@ TEST(SeekTip, WalksToTheRobotFormingTheNextLinkAndWaitsBesideIt) {
 RobotMemory calling_subgoal() {
   RobotMemory mem = init_memory(Mode::kPathFormation, kMe, {{0.0, 0.0}, 1.0, 0.0}, kNest, Params{}, 1);
   mem.pf.state = PfState::kSubgoal;
-  mem.pf.single_child = true;
-  mem.pf.call_links = true;
+  mem.pf.role = PfRole::kAllocated;  // single_child, rest_recruit and recruit_call: it calls
   mem.pf.parent = tracked(7, {0.7, 0.0});
   return mem;
 }
@@ -692,8 +699,9 @@ TEST(RecruitCall, ASubgoalNobodyClaimsCallsAfterTStarve) {
   RobotMemory c = calling_subgoal();
   EXPECT_EQ(first_call(c, heard, p, limit), 0);
   RobotMemory d = calling_subgoal();  // without the option it never calls
-  d.pf.call_links = false;
-  EXPECT_EQ(first_call(d, alone, p, limit), 0);
+  Params quiet = p;
+  quiet.recruit_call = false;
+  EXPECT_EQ(first_call(d, alone, quiet, limit), 0);
 }
 
 // R: sighting_returns (task allocation). An allocated explorer back where it saw the chain's tip
@@ -701,10 +709,10 @@ TEST(RecruitCall, ASubgoalNobodyClaimsCallsAfterTStarve) {
 // trip: the tip has moved nestward, past it.
 RobotMemory at_the_sighting() {
   RobotMemory mem = init_memory(Mode::kPathFormation, kMe, {{0.0, 0.0}, 1.0, 0.0}, kNest, Params{}, 1);
-  mem.pf.single_child = true;
+  mem.pf.role = PfRole::kAllocated;
   mem.pf.sighting = {0.2, 0.0};
   mem.pf.has_sighting = true;
-  mem.pf.to_sighting = true;
+  mem.pf.explore_leg = ExploreLeg::kToSighting;
   mem.pf.t_explore = 5000;
   return mem;
 }
@@ -712,13 +720,14 @@ RobotMemory at_the_sighting() {
 TEST(SightingReturns, NothingFreeWhereTheTipWasEndsTheTrip) {
   Params p;
   p.sighting_returns = true;
+  p.seek_tip = false;    // (with it, the robot forming from the subgoal would hold it there)
   Reading claimed_only;  // the subgoal it saw there is claimed now: robot 9 forms from it
   claimed_only.add(Led::kRed, 7, 0, 40, 6);
   claimed_only.add(Led::kWhite, 9, 180, 60, 7);
   RobotMemory mem = at_the_sighting();
   Reading r = claimed_only;
   path_formation_step(r.percept(), p, mem);
-  EXPECT_FALSE(mem.pf.to_sighting);
+  EXPECT_EQ(mem.pf.explore_leg, ExploreLeg::kTripOver);
   ++r.tick;
   path_formation_step(r.percept(), p, mem);
   EXPECT_EQ(mem.pf.state, PfState::kReturnToNest);
@@ -731,7 +740,7 @@ TEST(SightingReturns, NothingFreeWhereTheTipWasEndsTheTrip) {
   ++free_end.tick;
   path_formation_step(free_end.percept(), p, lured);
   EXPECT_EQ(lured.pf.state, PfState::kExploring);
-  Params no;
+  Params no = p;
   no.sighting_returns = false;
   RobotMemory off = at_the_sighting();
   Reading r2 = claimed_only;
@@ -841,7 +850,7 @@ TEST(ReturnLured, AScoutGoingHomeTurnsToTheGoalInView) {
   const auto turn = [](bool scout, const Params& p) {
     RobotMemory mem = init_memory(Mode::kPathFormation, kMe, {{0.0, 0.0}, -1.0, 0.0}, kNest, p, 1);
     mem.pf.state = PfState::kReturnToNest;
-    mem.pf.scout = scout;
+    mem.pf.role = scout ? PfRole::kScout : PfRole::kAllocated;
     Reading r;
     r.add(Led::kYellow, kGoalEmitter, -60, 80);  // on its right; the nest straight ahead
     Percept in = r.percept();

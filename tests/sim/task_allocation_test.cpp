@@ -319,7 +319,7 @@ TEST(TaTable, T10ARestingRobotJoinsAChainEndInViewForItsWait) {
   west.blobs[0].dir = {-1.0, 0.0};
   ASSERT_GT(ticks_to_join(beyond, west, p, 3 * static_cast<int>(p.t_recruit)), 0);
   EXPECT_EQ(beyond.pf.state, PfState::kSubgoalForming);
-  EXPECT_FALSE(beyond.pf.target_reached);
+  EXPECT_EQ(beyond.pf.form_leg, FormLeg::kToTarget);
 }
 
 TEST(TaTable, T10NotForAClaimedSubgoalNorAwayFromHomeNorWhenOff) {
@@ -367,7 +367,7 @@ TEST(TaTable, T10ARestingRobotAnswersACallFromAChainEndOutOfView) {
   EXPECT_EQ(mem.ta.last_row, 10);
   // it goes where the medium says the caller is, 2.5 m east, exploring (row 1 takes it from there)
   EXPECT_EQ(mem.pf.state, PfState::kExploring);
-  EXPECT_TRUE(mem.pf.to_sighting);
+  EXPECT_EQ(mem.pf.explore_leg, ExploreLeg::kToSighting);
   EXPECT_NEAR(mem.pf.sighting.x, 2.5, 1e-9);
   EXPECT_NEAR(mem.pf.sighting.y, 0.0, 1e-9);
   EXPECT_EQ(mem.pf.answering, 20);
@@ -458,7 +458,7 @@ TEST(TaTable, T11ARestingRobotAnswersASecondAllocationOnly) {
 RobotMemory chain_end(std::int64_t unclaimed) {
   RobotMemory mem = robot(TaState::kPathFormation);
   mem.pf.state = PfState::kSubgoal;
-  mem.pf.call_links = true;
+  mem.pf.role = PfRole::kAllocated;  // its subgoal calls (recruit_call)
   mem.pf.parent.id = 19;
   mem.pf.parent.last_seen = {0.7, 0.0};
   mem.pf.parent.visible = true;
@@ -495,7 +495,6 @@ TEST(TaTable, T12AChainEndLeftAloneGoesHomeToFoundTheRestOfThePath) {
   EXPECT_EQ(claimed_emitter(decode(cmd.rab)), kNobody);  // not a claim: explorers may form from 19
 
   RobotMemory parent = chain_end(0);
-  parent.pf.single_child = true;
   Reading told;
   told.hear(fetch_message(40, kMe));
   Percept at = told.percept();
