@@ -1,9 +1,9 @@
 # swarmpath: thin wrapper over the CMake presets (see README.md).
 #   make run      build (release), evolve with configs/evolve/default.toml, evaluate the best against
-#                 genomes/paper.toml on fresh seeds, export it for ARGoS
+#                 genomes/paper.toml on fresh seeds, export it for ARGoS, write the run's report page
 #   make test     build and run every test in release and under ASan + UBSan, then check formatting
 #   make asan     only the ASan + UBSan build and tests
-#   make bench    build (release) and run the benchmarks
+#   make bench    build (release) and run the benchmarks (the viewer's drawing speed too)
 #   make format   clang-format every source file in place
 
 JOBS ?= $(shell nproc)
@@ -26,7 +26,9 @@ run: build
 	  --robots 60 --seeds 4 --seed-base 1000 --threads $(JOBS) --json results/evolve/default/evaluate.json
 	./build/release/swarmpath export --params results/evolve/default/best.toml --format argos \
 	  --out results/evolve/default/best.argos.xml
+	./build/release/swarmpath report results/evolve/default --out results/evolve/default/report.html --threads $(JOBS)
 	@echo "files: results/evolve/default/ (best.toml, log.csv, fitness.svg, run.json, checkpoint.json, evaluate.json, best.argos.xml)"
+	@echo "report: results/evolve/default/report.html (open it in a browser)"
 
 test: build
 	ctest --preset release -j $(JOBS)
@@ -42,6 +44,7 @@ bench: build
 	./build/release/bench/sim_bench --benchmark_repetitions=9 --benchmark_enable_random_interleaving=true \
 		--benchmark_report_aggregates_only=true
 	./build/release/bench/growth 15
+	bash scripts/viewer_speed.sh
 
 format:
 	clang-format -i $(SOURCES)

@@ -64,6 +64,19 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     commands.push_back({c, add_arena(*c)});
   }
 
+  {
+    CLI::App* c = app.add_subcommand(
+        "view",
+        "Play a recorded run (simulate --record): one self-contained web page, a video or a frame as JSON.");
+    commands.push_back({c, add_view(*c)});
+  }
+
+  {
+    CLI::App* c = app.add_subcommand(
+        "report", "A tuning run (evolve's output folder) as one self-contained web page, with replays.");
+    commands.push_back({c, add_report(*c)});
+  }
+
   // CLI11 wants argv order with the program name first and parses from the back
   std::vector<std::string> reversed(args.rbegin(), args.rend());
   try {

@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/path_collision.hpp"
+#include "recording_file.hpp"
 #include "sim/astar.hpp"
 #include "sim/config_error.hpp"
 #include "sim/hash.hpp"
@@ -35,6 +36,8 @@ struct SimulateOptions {
   std::string heatmap_led;
   double heatmap_cell_cm = 25.0;
   bool json = false;
+  std::string record;
+  std::int64_t record_every = 0;
 };
 
 // the paper's figure colours: subgoal path blue, optimisation 1 purple, optimisation 2 green, A* red
@@ -58,7 +61,7 @@ void add_path_lines(Picture& pic, const sim::Metrics& m, const sim::AStarResult*
 
 int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err) {
   evolve::check_output_paths({{"--scenario", o.scenario}, {"--params", o.params}},
-                             {{"--svg", o.svg}, {"--heatmap", o.heatmap}});
+                             {{"--svg", o.svg}, {"--heatmap", o.heatmap}, {"--record", o.record}});
   sim::Scenario s = scenario_with_overrides(o.scenario, o.robots, o.ticks);
   if (o.keep_running) s.sim.stop_when_complete = false;
   const sim::Params p = params_or_defaults(o.params);
@@ -76,10 +79,14 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
     if (!o.heatmap_led.empty()) only = led_from_option("--heatmap-led", o.heatmap_led);
     occupancy.emplace(s.arena_bounds(), o.heatmap_cell_cm / 100.0, only);
   }
+  // the recorder only reads the world after each tick: the run is the same with or without it
+  std::optional<sim::Recorder> recorder;
+  if (!o.record.empty()) recorder.emplace(p, s, mode, o.seed, record_every(s, o.record_every));
   const bool progress = stderr_is_terminal();
   const Stopwatch clock;
   double next_report = 1.0;
   const sim::TickObserver observe = [&](const sim::World& w) {
+    if (recorder) recorder->observe(w);
     if (o.trails && w.tick % every == 0) {
       trails.resize(w.poses.size());
       for (std::size_t i = 0; i < w.poses.size(); ++i) trails[i].push_back(w.poses[i].p);
@@ -103,6 +110,13 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
     a8 = sim::astar(s, {sim::Connectivity::kEight});
   } catch (const sim::ConfigError& e) {
     err << "note: no A* baseline: " << e.what() << "\n";
+  }
+  std::size_t recorded_frames = 0;
+  if (recorder) {
+    sim::Recording r = recorder->finish(world, m, a8 ? &*a8 : nullptr);
+    complete_recording(r, s);
+    recorded_frames = r.frame_count();
+    write_recording_file(o.record, r);
   }
   const double robot_ticks_per_s =
       seconds > 0 ? static_cast<double>(m.robots) * static_cast<double>(m.ticks) / seconds : 0.0;
@@ -160,6 +174,7 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
     j["robot_ticks_per_second"] = robot_ticks_per_s;
     if (!o.svg.empty()) j["svg"] = o.svg;
     if (!o.heatmap.empty()) j["heatmap"] = o.heatmap;
+    if (!o.record.empty()) j["recording"] = {{"file", o.record}, {"frames", recorded_frames}};
     out << j.dump(2) << "\n";
     return kExitOk;
   }
@@ -195,6 +210,10 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
       << " M robot-ticks/s)\n";
   if (!o.svg.empty()) out << "  picture       " << o.svg << "\n";
   if (!o.heatmap.empty()) out << "  heat map      " << o.heatmap << "\n";
+  if (!o.record.empty()) {
+    out << "  recording     " << o.record << " (" << recorded_frames << " frames; swarmpath view " << o.record
+        << " --out run.html)\n";
+  }
   return kExitOk;
 }
 
@@ -230,6 +249,12 @@ Runner add_simulate(CLI::App& app) {
   app.add_option("--heatmap-cell", o->heatmap_cell_cm, "Heat-map cell side in cm (1-500)")
       ->capture_default_str();
   app.add_flag("--json", o->json, "Print one JSON object instead of the text summary");
+  app.add_option(
+      "--record", o->record,
+      "Record the run (.swrec): poses, LEDs, states and chain links every --record-every ticks, every "
+      "state change, the milestones and paths; play it with 'swarmpath view'");
+  app.add_option("--record-every", o->record_every,
+                 "Ticks between recorded frames (default: one second of simulated time, 10 ticks)");
   return [o](std::ostream& out, std::ostream& err) { return run_simulate(*o, out, err); };
 }
 

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // swarmpath table: a grid of scenario x robots x seed in parallel, written as the paper's table.
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <ostream>
@@ -13,6 +14,7 @@
 #include "evolve/atomic_write.hpp"
 #include "evolve/path_collision.hpp"
 #include "experiment.hpp"
+#include "recording_file.hpp"
 #include "sim/astar.hpp"
 #include "sim/config_error.hpp"
 #include "table_output.hpp"
@@ -34,7 +36,43 @@ struct TableOptions {
   std::string json;
   std::string csv;
   std::string markdown;
+  std::string record_failures;
+  std::int64_t record_every = 0;
 };
+
+// the failed runs of the grid again, recorded (the same runs: their state hashes are checked), one
+// file each in `dir`: <scenario>-n<robots>-<mode>-s<seed>.swrec
+void record_failures(const std::vector<sim::Scenario>& scenarios, const std::vector<GridRun>& runs,
+                     const sim::Params& p, const TableOptions& o, int threads, std::ostream& err) {
+  std::vector<std::size_t> failed;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    if (!runs[i].m.success) failed.push_back(i);
+  }
+  std::filesystem::create_directories(o.record_failures);
+  err << "  recording the " << failed.size() << " failed runs into " << o.record_failures << "\n";
+  std::vector<std::string> errors(failed.size());
+  const auto n = static_cast<std::int64_t>(failed.size());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (std::int64_t k = 0; k < n; ++k) {
+    const GridRun& g = runs[failed[static_cast<std::size_t>(k)]];
+    try {
+      const sim::Scenario s = sim::with_robots(scenarios[g.c.scenario], g.c.robots);
+      sim::Metrics m;
+      sim::Recording r = sim::record_run(p, s, g.c.mode, g.c.seed, record_every(s, o.record_every), &m);
+      if (m.state_hash != g.m.state_hash) throw std::logic_error("the recorded run differs from the table's");
+      complete_recording(r, s);
+      const std::string name = s.name + "-n" + std::to_string(g.c.robots) + "-" +
+                               std::string(sim::to_string(g.c.mode)) + "-s" + std::to_string(g.c.seed) +
+                               ".swrec";
+      write_recording_file((std::filesystem::path(o.record_failures) / name).string(), r);
+    } catch (const std::exception& e) {
+      errors[static_cast<std::size_t>(k)] = e.what();
+    }
+  }
+  for (const std::string& e : errors) {
+    if (!e.empty()) throw std::runtime_error("recording a failed run: " + e);
+  }
+}
 
 int run_table(const TableOptions& o, const evolve::EvaluatorFactory& evaluators, std::ostream& out,
               std::ostream& err) {
@@ -85,6 +123,7 @@ int run_table(const TableOptions& o, const evolve::EvaluatorFactory& evaluators,
   const std::vector<GridRun> runs = run_grid(scenarios, grid, p, *evaluator, progress);
   if (tty) err << "\n";
   err << "  done in " << fixed(clock.seconds(), 1) << " s: " << evaluator->summary() << "\n";
+  if (!o.record_failures.empty()) record_failures(scenarios, runs, p, o, threads, err);
 
   std::ostringstream md;
   nlohmann::ordered_json json;
@@ -139,6 +178,12 @@ Runner add_table(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
   app.add_option("--json", o->json, "Write runs, cases, environments and summary as JSON");
   app.add_option("--csv", o->csv, "Write one CSV line per run");
   app.add_option("--md", o->markdown, "Write the markdown table to this file too");
+  app.add_option(
+      "--record-failures", o->record_failures,
+      "Record every run that did not form its path into this folder (.swrec, one per run; play them "
+      "with 'swarmpath view')");
+  app.add_option("--record-every", o->record_every,
+                 "Ticks between recorded frames (default: one second of simulated time, 10 ticks)");
   return
       [o, evaluators](std::ostream& out, std::ostream& err) { return run_table(*o, evaluators, out, err); };
 }

@@ -24,5 +24,7 @@ Runner add_evolve(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
 Runner add_evaluate(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
 Runner add_export(CLI::App& app);
 Runner add_arena(CLI::App& app);
+Runner add_view(CLI::App& app);
+Runner add_report(CLI::App& app);
 
 }  // namespace swarmpath::app

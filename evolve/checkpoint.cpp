@@ -78,7 +78,11 @@ nlohmann::ordered_json checkpoint_json(const RunState& s) {
                        {"hypervolume", r.hypervolume},
                        {"front_size", r.front_size},
                        {"feasible", r.feasible},
-                       {"front_min", r.front_min}});
+                       {"front_min", r.front_min},
+                       {"tuned_best", r.tuned_best},
+                       {"tuned_mean", r.tuned_mean},
+                       {"tuned_min", r.tuned_min},
+                       {"tuned_max", r.tuned_max}});
   }
   j["history"] = history;
   nlohmann::ordered_json elites = nlohmann::ordered_json::array();
@@ -122,6 +126,13 @@ RunState checkpoint_from_json(const nlohmann::json& j) {
       g.front_size = r.at("front_size").get<int>();
       g.feasible = r.at("feasible").get<int>();
       g.front_min = r.at("front_min").get<Vector>();
+      // the tuned values came later: checkpoints without them still resume
+      for (auto [key, v] : {std::pair{"tuned_best", &g.tuned_best},
+                            {"tuned_mean", &g.tuned_mean},
+                            {"tuned_min", &g.tuned_min},
+                            {"tuned_max", &g.tuned_max}}) {
+        if (r.contains(key)) *v = r.at(key).get<Vector>();
+      }
       s.history.push_back(g);
     }
     for (const nlohmann::json& e : j.at("elites")) {

@@ -33,6 +33,9 @@ struct GenerationRecord {
   int front_size = 0;        ///< points of the feasible non-dominated front
   int feasible = 0;          ///< feasible candidates of this generation
   Vector front_min;          ///< per objective, the front's lowest value (empty: no front)
+  // the tuned values (decoded, in gene order): the parameter trajectories of `swarmpath report`
+  Vector tuned_best;                        ///< of the generation's best candidate (empty: none)
+  Vector tuned_mean, tuned_min, tuned_max;  ///< over its valid candidates (empty: none valid)
 };
 
 /// A distinct candidate among the best so far, by its generation mean.

@@ -166,6 +166,7 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
       if (!penalised) st.runs += static_cast<std::int64_t>(cases.size());
     }
     opt->tell(xs, objectives, violation);
+    book_tuned_values(rec, c.genome, decoded, std::nullopt);
 
     st.elites = population_elites(c, opt->population(), xs, objectives, decoded, stats, gen, st.elites);
     std::vector<Elite> front_elites = front_of(opt->front(), st.elites, c);

@@ -173,6 +173,10 @@ nlohmann::ordered_json run_json(const EvolveConfig& c, const RunResult& r, int t
     finalists.push_back(finalist_json(c, r.finalists[i], i));
   j["finalists"] = finalists;
   j["base_reevaluated"] = stats_json(r.base.reevaluated);
+  nlohmann::ordered_json base_tuned;
+  for (const Gene& g : c.genome.genes)
+    base_tuned[std::string(g.info->name)] = param_value_json(c.genome.base, *g.info);
+  j["base_tuned"] = base_tuned;
   j["base_held_out"] =
       r.base.held_out.runs > 0 ? stats_json(r.base.held_out) : nlohmann::ordered_json(nullptr);
   j["best"] =

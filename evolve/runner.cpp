@@ -209,6 +209,26 @@ BatchEvaluator& evaluator_of(const RunOptions& o, std::unique_ptr<BatchEvaluator
   return *own;
 }
 
+void book_tuned_values(GenerationRecord& rec, const Genome& g, const std::vector<Decoded>& decoded,
+                       std::optional<std::size_t> best) {
+  if (best) rec.tuned_best = tuned_numbers(g, decoded.at(*best).params);
+  std::size_t valid = 0;
+  for (const Decoded& d : decoded) {
+    if (!d.violation.empty()) continue;
+    const std::vector<double> v = tuned_numbers(g, d.params);
+    if (valid++ == 0) {
+      rec.tuned_mean = rec.tuned_min = rec.tuned_max = v;
+      continue;
+    }
+    for (std::size_t k = 0; k < v.size(); ++k) {
+      rec.tuned_mean[k] += v[k];
+      rec.tuned_min[k] = std::min(rec.tuned_min[k], v[k]);
+      rec.tuned_max[k] = std::max(rec.tuned_max[k], v[k]);
+    }
+  }
+  for (double& m : rec.tuned_mean) m /= static_cast<double>(valid);
+}
+
 RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const RunOptions& o) {
   const Budget budget = effective_budget(c, o.generations);
   const OptimizerFactory factory = o.make_optimizer ? o.make_optimizer : OptimizerFactory(make_optimizer);
@@ -267,6 +287,7 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
     for (const double v : fitness) sq += (v - rec.mean) * (v - rec.mean);
     rec.std = std::sqrt(sq / static_cast<double>(fitness.size()));
     rec.best_so_far = st.history.empty() ? rec.best : std::min(st.history.back().best_so_far, rec.best);
+    book_tuned_values(rec, c.genome, decoded, best);
     update_elites(st.elites, c.genome, xs, decoded, stats, gen, keep);
     for (const Decoded& d : decoded) {
       if (d.violation.empty()) st.runs += static_cast<std::int64_t>(nc);

@@ -92,6 +92,11 @@ std::vector<EvalCase> first_cases(const EvolveConfig& c, const std::vector<EvalS
 /// Every candidate decoded (repaired), in order.
 std::vector<Decoded> decode_all(const Genome& g, const std::vector<Vector>& xs);
 
+/// Books a generation's tuned values into `rec`: those of candidate `best` (when given) and the
+/// mean, min and max over the candidates without a violation.
+void book_tuned_values(GenerationRecord& rec, const Genome& g, const std::vector<Decoded>& decoded,
+                       std::optional<std::size_t> best);
+
 /// Ends generation rec.generation: counts it and its candidates into st, stamps rec with the
 /// evaluation count and `seconds`, appends it, stores the optimiser's state, calls `write` (the
 /// progress files; skipped when empty), then every callback. True when a callback asks to stop.

@@ -13,6 +13,8 @@ packages=(
   libcli11-dev            # command line
   libtomlplusplus-dev     # TOML scenario / params / config files
   nlohmann-json3-dev      # JSON output
+  zlib1g-dev              # recordings (.swrec) are zlib-compressed
+  chromium nodejs         # the browser tests of the viewer and report (headless, DevTools protocol)
 )
 
 missing=()

@@ -78,6 +78,23 @@ RobotMemory init_memory(Mode m, int id, const Pose& start, Vec2 nest, const Para
   return mem;
 }
 
+std::string state_code_name(Mode m, std::uint8_t code) {
+  switch (m) {
+    case Mode::kDiffusion:
+      return code == 0 ? "walk" : code == 1 ? "avoid" : "?";
+    case Mode::kPathFormation:
+      return code < kPfStateCount ? std::string(to_string(static_cast<PfState>(code))) : "?";
+    case Mode::kTaskAllocation: {
+      // task_allocation_step's code: TaState * 16 + PfState
+      const int ta = code / 16, pf = code % 16;
+      if (ta >= kTaStateCount || pf >= kPfStateCount) return "?";
+      return std::string(to_string(static_cast<TaState>(ta))) + "/" +
+             std::string(to_string(static_cast<PfState>(pf)));
+    }
+  }
+  return "?";
+}
+
 Command control(Mode m, const Percept& in, const Params& p, RobotMemory& mem) {
   switch (m) {
     case Mode::kDiffusion:

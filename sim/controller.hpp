@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 #include "controllers/navigation.hpp"
@@ -59,6 +60,11 @@ Led initial_led(Mode m);
 
 /// Sets up robot `id`'s memory at deployment.
 RobotMemory init_memory(Mode m, int id, const Pose& start, Vec2 nest, const Params& p, std::uint64_t seed);
+
+/// The name of a robot's state code (RobotMemory::state) in mode `m`, from the controllers' own
+/// names: "exploring" in path formation, "path_formation/subgoal" (task allocation, then path
+/// formation) in task allocation, "walk" or "avoid" in diffusion; "?" for a code no state has.
+std::string state_code_name(Mode m, std::uint8_t code);
 
 /// One control step of robot `in.id`.
 Command control(Mode m, const Percept& in, const Params& p, RobotMemory& mem);
