@@ -15,6 +15,7 @@ packages=(
   nlohmann-json3-dev      # JSON output
   zlib1g-dev              # recordings (.swrec) are zlib-compressed
   chromium nodejs         # the browser tests of the viewer and report (headless, DevTools protocol)
+  libopenmpi-dev openmpi-bin  # the MPI backend: evolve, table and evaluate across a cluster (docs/mpi.md)
 )
 
 missing=()
