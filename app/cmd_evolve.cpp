@@ -148,16 +148,23 @@ int run_evolve(const EvolveOptions& o, const evolve::EvaluatorFactory& evaluator
   const evolve::Budget budget = evolve::effective_budget(c, o.generations);
   const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
 
-  std::size_t training = 0;
-  for (const evolve::EvalSetting& s : objective.settings()) training += s.held_out ? 0 : 1;
+  std::size_t training = 0, families = 0;
+  for (const evolve::EvalSetting& s : objective.settings()) {
+    training += s.held_out || s.family >= 0 ? 0 : 1;
+    families += s.family >= 0 ? 1 : 0;
+  }
+  const std::size_t runs = evolve::first_cases(c, objective.settings()).size();
   std::string names;
   for (const evolve::Gene& g : c.genome.genes)
     names += (names.empty() ? "" : " ") + std::string(g.info->name);
   err << "swarmpath evolve: " << c.name << " (" << c.file << "), mode " << sim::to_string(c.mode) << ", "
-      << c.genome.dim() << " parameters (" << names << "), "
-      << training * static_cast<std::size_t>(c.evaluation.seeds) << " runs per candidate (" << training
-      << " scenario x robots settings x " << c.evaluation.seeds << " seeds), optimiser " << c.optimizer.name
-      << ", budget " << budget_text(budget) << ", " << evaluator->describe() << " -> " << dir << "\n";
+      << c.genome.dim() << " parameters (" << names << "), " << runs << " runs per candidate (" << training
+      << " scenario x robots settings x " << c.evaluation.seeds << " seeds"
+      << (families > 0
+              ? ", " + std::to_string(families) + " family x robots settings on fresh arenas every generation"
+              : std::string())
+      << "), optimiser " << c.optimizer.name << ", budget " << budget_text(budget) << ", " << evaluator->describe()
+      << " -> " << dir << "\n";
 
   const bool tty = stderr_is_terminal();
   const Stopwatch clock;
@@ -203,6 +210,10 @@ int run_evolve(const EvolveOptions& o, const evolve::EvaluatorFactory& evaluator
     } else {
       err << "best " << num(r.best) << " (success " << fixed(100.0 * r.best_success_rate, 0) << " %), mean "
           << num(r.mean) << " +- " << num(r.std) << ", best so far " << num(r.best_so_far);
+      if (r.validation_runs > 0) {
+        err << ", best on validation " << num(r.validation_fitness) << " (success "
+            << fixed(100.0 * r.validation_success_rate, 0) << " %)";
+      }
     }
     err << ", " << r.evaluations << " evaluations, " << fixed(t, 0) << " s, ETA "
         << fixed(eta_seconds(budget, st, gen0, eval0, t), 0) << " s\n";
@@ -237,7 +248,13 @@ int run_evolve(const EvolveOptions& o, const evolve::EvaluatorFactory& evaluator
   }
   print_stats_row(out, "base params", c.params_written.empty() ? "paper defaults" : c.params_written,
                   evolve::CandidateStats{}, r.base.reevaluated, r.base.held_out);
-  out << "\nbest (fresh-seed fitness " << num(best.reevaluated.fitness) << " vs base "
+  if (best.arenas.runs > 0) {
+    out << "\non the " << best.arenas.runs << " validation arena runs alone: best "
+        << num(best.arenas.fitness) << " (success " << fixed(100.0 * best.arenas.success_rate, 0)
+        << " %), base params " << num(r.base.arenas.fitness) << " (success "
+        << fixed(100.0 * r.base.arenas.success_rate, 0) << " %)\n";
+  }
+  out << "\nbest (validation-set fitness " << num(best.reevaluated.fitness) << " vs base "
       << num(r.base.reevaluated.fitness) << "):\n";
   for (const evolve::Gene& g : c.genome.genes) {
     out << "  " << g.info->name << " = " << sim::format_value(best.params, *g.info) << "   (base "

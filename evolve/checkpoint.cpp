@@ -83,6 +83,11 @@ nlohmann::ordered_json checkpoint_json(const RunState& s) {
                        {"tuned_mean", r.tuned_mean},
                        {"tuned_min", r.tuned_min},
                        {"tuned_max", r.tuned_max}});
+    if (r.validation_runs > 0) {
+      history.back()["validation_runs"] = r.validation_runs;
+      history.back()["validation_fitness"] = r.validation_fitness;
+      history.back()["validation_success_rate"] = r.validation_success_rate;
+    }
   }
   j["history"] = history;
   nlohmann::ordered_json elites = nlohmann::ordered_json::array();
@@ -132,6 +137,11 @@ RunState checkpoint_from_json(const nlohmann::json& j) {
                             {"tuned_min", &g.tuned_min},
                             {"tuned_max", &g.tuned_max}}) {
         if (r.contains(key)) *v = r.at(key).get<Vector>();
+      }
+      if (r.contains("validation_runs")) {
+        g.validation_runs = r.at("validation_runs").get<int>();
+        g.validation_fitness = r.at("validation_fitness").get<double>();
+        g.validation_success_rate = r.at("validation_success_rate").get<double>();
       }
       s.history.push_back(g);
     }

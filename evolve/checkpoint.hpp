@@ -36,6 +36,10 @@ struct GenerationRecord {
   // the tuned values (decoded, in gene order): the parameter trajectories of `swarmpath report`
   Vector tuned_best;                        ///< of the generation's best candidate (empty: none)
   Vector tuned_mean, tuned_min, tuned_max;  ///< over its valid candidates (empty: none valid)
+  // [reevaluate] every_generation: this generation's best on the validation set
+  int validation_runs = 0;               ///< 0: not evaluated
+  double validation_fitness = 0.0;       ///< its mean fitness there
+  double validation_success_rate = 0.0;  ///< its success rate there
 };
 
 /// A distinct candidate among the best so far, by its generation mean.

@@ -136,21 +136,72 @@ void read_tune(EvolveConfig& c, const TableReader& root) {
   }
 }
 
+// the robot counts of `key`: whole numbers in [1, kMaxRobots], at least one
+std::vector<int> robot_counts(const TableReader& t, std::string_view key) {
+  std::vector<int> out;
+  for (const double n : t.numbers(key)) {
+    if (n != std::floor(n) || n < 1 || n > sim::kMaxRobots) {
+      t.fail(key, "robot counts must be whole numbers in [1, " + std::to_string(sim::kMaxRobots) + "]");
+    }
+    out.push_back(static_cast<int>(n));
+  }
+  if (out.empty()) t.fail(key, "the evaluation set is empty: give at least one robot count");
+  return out;
+}
+
+// a scenario file drawn from a benchmark's seed is for measuring, never for tuning
+void refuse_benchmark_arena(const TableReader& t, std::string_view key, const ScenarioRef& ref,
+                            const sim::Scenario& s) {
+  if (s.origin && sim::arenas::is_benchmark_seed(s.origin->seed)) {
+    t.fail(key, ref.written + " was drawn from seed " + std::to_string(s.origin->seed) + " of family " +
+                    s.origin->family + ", a benchmark's seed (" +
+                    std::to_string(sim::arenas::kBenchmarkSeedLo) + " - " +
+                    std::to_string(sim::arenas::kBenchmarkSeedHi - 1) +
+                    "): a benchmark is for measuring, never for tuning (docs/generalisation.md)");
+  }
+}
+
+// [[evaluation.family]]: family, params, arenas, robots, seeds
+FamilyEntry read_family(const TableReader& t, const EvaluationSet& e) {
+  FamilyEntry f;
+  f.spec = sim::arenas::read_spec(t, "family", "params");
+  if (const std::optional<TableReader> params = t.table("params"); params && params->has("robots")) {
+    params->fail("robots",
+                 "give the robot counts as the entry's robots = [...] (the arena is drawn for the largest)");
+  }
+  f.arenas = int_in(t, "arenas", 1, 1, 10000);
+  if (t.has("robots")) {
+    f.robots = robot_counts(t, "robots");
+  } else {
+    t.allow("robots");
+    f.robots =
+        e.robots.empty() ? std::vector<int>{static_cast<int>(f.spec.param_values()("robots"))} : e.robots;
+  }
+  const int most = *std::max_element(f.robots.begin(), f.robots.end());
+  const std::vector<sim::arenas::FamilyParam> params = sim::arenas::all_params(*f.spec.family);
+  for (std::size_t i = 0; i < params.size(); ++i) {
+    if (params[i].name != "robots") continue;
+    if (most > params[i].hi) {
+      t.fail(t.has("robots") ? "robots" : "family", "a drawn arena holds at most " + fmt(params[i].hi) +
+                                                        " robots (got " + std::to_string(most) + ")");
+    }
+    f.spec.values[i] = most;
+  }
+  f.seeds = int_in(t, "seeds", e.seeds, 1, 100000);
+  t.finish();
+  return f;
+}
+
 void read_evaluation(EvolveConfig& c, const TableReader& root, const std::string& base_dir) {
   const TableReader t = root.required_table("evaluation");
   EvaluationSet& e = c.evaluation;
-  e.scenarios = scenario_list(t, "scenarios", base_dir);
-  if (e.scenarios.empty())
-    t.fail("scenarios", "the evaluation set is empty: name at least one scenario file");
+  if (t.has("scenarios")) {
+    e.scenarios = scenario_list(t, "scenarios", base_dir);
+  } else {
+    t.allow("scenarios");
+  }
   if (t.has("robots")) {
-    for (const double n : t.numbers("robots")) {
-      if (n != std::floor(n) || n < 1 || n > sim::kMaxRobots) {
-        t.fail("robots",
-               "robot counts must be whole numbers in [1, " + std::to_string(sim::kMaxRobots) + "]");
-      }
-      e.robots.push_back(static_cast<int>(n));
-    }
-    if (e.robots.empty()) t.fail("robots", "the evaluation set is empty: give at least one robot count");
+    e.robots = robot_counts(t, "robots");
   } else {
     t.allow("robots");
   }
@@ -164,10 +215,17 @@ void read_evaluation(EvolveConfig& c, const TableReader& root, const std::string
     t.allow("max_ticks");
   }
   e.fixed_seeds = t.boolean_or("fixed_seeds", false);
+  for (const TableReader& f : t.table_array("family")) e.families.push_back(read_family(f, e));
   t.finish();
+  if (e.scenarios.empty() && e.families.empty()) {
+    t.fail(
+        "scenarios",
+        "the evaluation set is empty: name at least one scenario file or an [[evaluation.family]] of arenas");
+  }
   // every scenario must load and take every robot count
   for (const ScenarioRef& ref : e.scenarios) {
     const sim::Scenario s = sim::load_scenario(ref.path);
+    refuse_benchmark_arena(t, "scenarios", ref, s);
     for (const int n : e.robots) {
       if (const std::string err = sim::check_robot_count(s, n); !err.empty()) {
         t.fail("robots", ref.written + ": " + err);
@@ -299,14 +357,17 @@ void read_budget(EvolveConfig& c, const TableReader& root) {
 }
 
 void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string& base_dir) {
+  Reevaluation& r = c.reevaluate;
+  r.every_generation = !c.evaluation.families.empty();  // the default: log generalisation when arenas vary
   const std::optional<TableReader> t = root.table("reevaluate");
   if (!t) return;
-  Reevaluation& r = c.reevaluate;
   if (c.multi_objective() && t->has("top_k")) {
     t->fail("top_k", "a multi-objective run re-evaluates every point of its final front: remove top_k");
   }
   r.top_k = int_in(*t, "top_k", r.top_k, 1, 1000);
   r.seeds = int_in(*t, "seeds", r.seeds, 1, 100000);
+  r.arenas = int_in(*t, "arenas", r.arenas, 1, 10000);
+  r.every_generation = t->boolean_or("every_generation", r.every_generation);
   if (t->has("held_out")) {
     r.held_out = scenario_list(*t, "held_out", base_dir);
   } else {
@@ -315,6 +376,7 @@ void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string
   t->finish();
   for (const ScenarioRef& ref : r.held_out) {
     const sim::Scenario s = sim::load_scenario(ref.path);
+    refuse_benchmark_arena(*t, "held_out", ref, s);
     for (const int n : c.evaluation.robots) {
       if (const std::string err = sim::check_robot_count(s, n); !err.empty()) {
         t->fail("held_out", ref.written + ": " + err);
@@ -433,6 +495,21 @@ nlohmann::ordered_json config_json(const EvolveConfig& c) {
       {"seeds", e.seeds},
       {"max_ticks", e.max_ticks ? nlohmann::ordered_json(*e.max_ticks) : nlohmann::ordered_json(nullptr)},
       {"fixed_seeds", e.fixed_seeds}};
+  if (!e.families.empty()) {
+    // only runs with families carry these keys, so the hash of every other config stays as it was
+    nlohmann::ordered_json families = nlohmann::ordered_json::array();
+    for (const FamilyEntry& f : e.families) {
+      nlohmann::ordered_json params;
+      for (const auto& [k, v] : f.spec.sorted_params()) params[k] = v;
+      families.push_back({{"family", std::string(f.spec.family->name)},
+                          {"params", params},
+                          {"arenas", f.arenas},
+                          {"robots", f.robots},
+                          {"seeds", f.seeds}});
+    }
+    j["evaluation"]["families"] = families;
+    j["evaluation"]["arena_generator_version"] = sim::arenas::kGeneratorVersion;
+  }
   const FitnessWeights& w = c.fitness;
   j["fitness"] = {{"w_fail", w.w_fail},
                   {"w_time", w.w_time},
@@ -458,6 +535,10 @@ nlohmann::ordered_json config_json(const EvolveConfig& c) {
                      {"seeds", c.reevaluate.seeds},
                      {"held_out", refs_json(c.reevaluate.held_out)},
                      {"held_out_hashes", ref_hashes_json(c.reevaluate.held_out)}};
+  if (!e.families.empty() || c.reevaluate.every_generation) {
+    j["reevaluate"]["arenas"] = c.reevaluate.arenas;
+    j["reevaluate"]["every_generation"] = c.reevaluate.every_generation;
+  }
   if (c.multi_objective()) {
     nlohmann::ordered_json use = nlohmann::ordered_json::array();
     for (const ObjectiveKind k : c.multi.objectives) use.push_back(std::string(objective_name(k)));

@@ -18,6 +18,7 @@
 #include "evolve/genome.hpp"
 #include "evolve/optim/optimizer.hpp"
 #include "evolve/pareto_objectives.hpp"
+#include "sim/arenas/registry.hpp"
 #include "sim/controller.hpp"
 #include "sim/params.hpp"
 
@@ -30,13 +31,24 @@ struct ScenarioRef {
   std::uint64_t content_hash = 0;  ///< FNV-1a of the file's bytes (part of the config hash)
 };
 
-/// Which simulations score a candidate: every scenario x robot count x seed.
+/// Arenas drawn from a family ([[evaluation.family]]): every generation draws `arenas` fresh ones,
+/// shared by all candidates of the generation and by all robot counts.
+struct FamilyEntry {
+  sim::arenas::ArenaSpec spec;  ///< family and parameters; its robots parameter is max(robots)
+  int arenas = 1;               ///< fresh arenas per generation
+  std::vector<int> robots;      ///< robot counts
+  int seeds = 1;                ///< runs per arena and robot count
+};
+
+/// Which simulations score a candidate: every scenario x robot count x seed, and every family
+/// entry's arenas of the generation x robot count x seed.
 struct EvaluationSet {
   std::vector<ScenarioRef> scenarios;
   std::vector<int> robots;                ///< robot counts; empty: each scenario's own count
   int seeds = 2;                          ///< seeds per (scenario, robots) and candidate
   std::optional<std::int64_t> max_ticks;  ///< overrides every scenario's T_max
-  bool fixed_seeds = false;               ///< true: every generation reuses generation 0's seeds
+  bool fixed_seeds = false;               ///< true: every generation reuses generation 0's seeds (and arenas)
+  std::vector<FamilyEntry> families;      ///< arena families (beside or instead of the scenarios)
 };
 
 /// When the run stops (the first limit reached; 0 = no limit; at least one is set).
@@ -51,6 +63,8 @@ struct Reevaluation {
   int top_k = 3;                      ///< finalists, distinct by their decoded params
   int seeds = 4;                      ///< fresh seeds per (scenario, robots)
   std::vector<ScenarioRef> held_out;  ///< extra scenarios, reported, not used to choose
+  int arenas = 4;                     ///< validation arenas per family entry (seeds training never uses)
+  bool every_generation = false;      ///< evaluate each generation's best on the validation set (log.csv)
 };
 
 struct EvolveConfig {

@@ -28,6 +28,7 @@ nlohmann::ordered_json finalist_json(const EvolveConfig& c, const Finalist& f, s
   j["generation_stats"] = stats_json(f.elite.stats);
   j["reevaluated"] = stats_json(f.reevaluated);
   j["held_out"] = f.held_out.runs > 0 ? stats_json(f.held_out) : nlohmann::ordered_json(nullptr);
+  if (f.arenas.runs > 0) j["validation_arenas"] = stats_json(f.arenas);
   nlohmann::ordered_json tuned;
   for (const Gene& g : c.genome.genes) tuned[std::string(g.info->name)] = param_value_json(f.params, *g.info);
   j["tuned"] = tuned;
@@ -59,12 +60,18 @@ std::string exact(double v) {
   return std::string(buf, r.ptr);
 }
 
-void write_log_csv(std::ostream& out, const std::vector<GenerationRecord>& history) {
-  out << "generation,best,mean,std,best_so_far,best_success_rate,evaluations,seconds\n";
+void write_log_csv(std::ostream& out, const std::vector<GenerationRecord>& history, bool validation) {
+  out << "generation,best,mean,std,best_so_far,best_success_rate,evaluations,seconds"
+      << (validation ? ",validation_fitness,validation_success_rate" : "") << "\n";
   for (const GenerationRecord& r : history) {
     out << r.generation << ',' << exact(r.best) << ',' << exact(r.mean) << ',' << exact(r.std) << ','
         << exact(r.best_so_far) << ',' << exact(r.best_success_rate) << ',' << r.evaluations << ','
-        << exact(r.seconds) << '\n';
+        << exact(r.seconds);
+    if (validation) {
+      out << ',' << (r.validation_runs > 0 ? exact(r.validation_fitness) : "") << ','
+          << (r.validation_runs > 0 ? exact(r.validation_success_rate) : "");
+    }
+    out << '\n';
   }
 }
 
@@ -72,10 +79,17 @@ void write_fitness_svg(std::ostream& out, const std::string& title,
                        const std::vector<GenerationRecord>& history) {
   std::vector<Series> series = {
       {"mean", "#7a9cc6", {}}, {"best of generation", "#e07000", {}}, {"best so far", "#00a651", {}}};
+  const bool validation = std::any_of(history.begin(), history.end(),
+                                      [](const GenerationRecord& r) { return r.validation_runs > 0; });
+  if (validation) series.push_back({"best on the validation set", "#8e44ad", {}});
   for (const GenerationRecord& r : history) {
     series[0].values.push_back(r.mean);
     series[1].values.push_back(r.best);
     series[2].values.push_back(r.best_so_far);
+    if (validation) {
+      series[3].values.push_back(r.validation_runs > 0 ? r.validation_fitness
+                                                       : std::numeric_limits<double>::quiet_NaN());
+    }
   }
   write_line_chart(out, title, "fitness per generation (lower is better)", "fitness", series);
 }
@@ -93,6 +107,12 @@ std::string best_toml(const EvolveConfig& c, const RunResult& r) {
     << ".\n";
   h << "# The base params on the same fresh seeds: fitness " << short_text(r.base.reevaluated.fitness)
     << ", success rate " << short_text(r.base.reevaluated.success_rate) << ".\n";
+  if (f.arenas.runs > 0) {
+    h << "# On the validation arenas alone (drawn from seeds training never uses): fitness "
+      << short_text(f.arenas.fitness) << " over " << f.arenas.runs << " runs, success rate "
+      << short_text(f.arenas.success_rate) << " (base params: " << short_text(r.base.arenas.fitness) << ", "
+      << short_text(r.base.arenas.success_rate) << ").\n";
+  }
   if (f.held_out.runs > 0) {
     h << "# Held-out scenarios: fitness " << short_text(f.held_out.fitness) << " over " << f.held_out.runs
       << " runs, success rate " << short_text(f.held_out.success_rate) << ".\n";
@@ -131,11 +151,27 @@ nlohmann::ordered_json run_json_common(const EvolveConfig& c, const RunState& st
       "(scenario, then robot count, then replicate); the candidate index is not an input (common random "
       "numbers).";
   nlohmann::ordered_json case_list = nlohmann::ordered_json::array();
+  bool arenas = false;
   for (const EvalCase& k : cases) {
     const EvalSetting& s = settings.at(k.setting);
     case_list.push_back({{"scenario", s.scenario}, {"robots", s.robots}, {"replicate", k.replicate}});
+    if (s.family >= 0) {
+      case_list.back()["family_entry"] = s.family;
+      case_list.back()["arena"] = k.arena;
+      arenas = true;
+    }
   }
   seeds["cases"] = case_list;
+  if (arenas) {
+    seeds["arena_derivation"] =
+        "training arena k of family entry f in generation g: 2^61 + (mix_seed(master, 0x6172656e61, "
+        "fixed_seeds ? 0 "
+        ": g, f, k) >> 3), the same for every candidate and robot count; validation arena k of entry f: 2^62 "
+        "+ "
+        "(mix_seed(master, 0x76616c, f, k) >> 3). Draw one again with swarmpath arena generate --family "
+        "<family> "
+        "--seed <seed> and the entry's parameters.";
+  }
   nlohmann::ordered_json gens = nlohmann::ordered_json::array();
   for (std::int64_t g = 0; g < st.generation; ++g) {
     nlohmann::ordered_json row = nlohmann::ordered_json::array();
@@ -145,6 +181,22 @@ nlohmann::ordered_json run_json_common(const EvolveConfig& c, const RunState& st
     gens.push_back(row);
   }
   seeds["generations"] = gens;
+  if (arenas) {
+    // the arena of every case of every generation (0 for a scenario file's case)
+    nlohmann::ordered_json arena_gens = nlohmann::ordered_json::array();
+    for (std::int64_t g = 0; g < st.generation; ++g) {
+      nlohmann::ordered_json row = nlohmann::ordered_json::array();
+      for (const EvalCase& k : cases) {
+        const EvalSetting& s = settings.at(k.setting);
+        row.push_back(s.family < 0 ? 0
+                                   : training_arena_seed(c.seed, g, static_cast<std::uint64_t>(s.family),
+                                                         static_cast<std::uint64_t>(k.arena),
+                                                         c.evaluation.fixed_seeds));
+      }
+      arena_gens.push_back(row);
+    }
+    seeds["arena_generations"] = arena_gens;
+  }
   nlohmann::ordered_json reev = nlohmann::ordered_json::array();
   for (const EvalCase& k : reevaluation_cases) {
     const EvalSetting& s = settings.at(k.setting);
@@ -153,6 +205,11 @@ nlohmann::ordered_json run_json_common(const EvolveConfig& c, const RunState& st
                     {"held_out", s.held_out},
                     {"replicate", k.replicate},
                     {"seed", k.seed}});
+    if (s.family >= 0) {
+      const sim::arenas::ArenaSpec& spec = c.evaluation.families.at(static_cast<std::size_t>(s.family)).spec;
+      reev.back()["arena_seed"] = k.arena_seed;
+      reev.back()["arena"] = spec.command_line(k.arena_seed);
+    }
   }
   seeds["reevaluation"] = reev;
   j["seeds"] = seeds;
@@ -179,6 +236,7 @@ nlohmann::ordered_json run_json(const EvolveConfig& c, const RunResult& r, int t
   j["base_tuned"] = base_tuned;
   j["base_held_out"] =
       r.base.held_out.runs > 0 ? stats_json(r.base.held_out) : nlohmann::ordered_json(nullptr);
+  if (r.base.arenas.runs > 0) j["base_validation_arenas"] = stats_json(r.base.arenas);
   j["best"] =
       r.finalists.empty() ? nlohmann::ordered_json(nullptr) : finalist_json(c, r.finalists[r.best], r.best);
   if (!r.finalists.empty()) j["best"]["params"] = params_values_json(r.finalists[r.best].params);

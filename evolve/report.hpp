@@ -30,12 +30,13 @@ BuildInfo build_info();
 /// Shortest text that reads back to the same double ("nan"/"inf" as such).
 std::string exact(double v);
 
-/// generation,best,mean,std,best_so_far,best_success_rate,evaluations,seconds
-void write_log_csv(std::ostream& out, const std::vector<GenerationRecord>& history);
+/// generation,best,mean,std,best_so_far,best_success_rate,evaluations,seconds; with `validation`
+/// also validation_fitness,validation_success_rate (the generation's best on the validation set)
+void write_log_csv(std::ostream& out, const std::vector<GenerationRecord>& history, bool validation = false);
 
 /// Best, mean and best-so-far fitness over the generations, as plain SVG.
 void write_fitness_svg(std::ostream& out, const std::string& title,
-                       const std::vector<GenerationRecord>& history);
+                       const std::vector<GenerationRecord>& history);  // with the validation line when logged
 
 /// best.toml: write_params_toml of the best finalist under a comment saying where it came from.
 std::string best_toml(const EvolveConfig& c, const RunResult& r);

@@ -49,7 +49,7 @@ void update_elites(std::vector<Elite>& elites, const Genome& genome, const std::
 // whose resume re-runs the generation (and rewrites the files that ran ahead of it)
 void write_progress_files(const EvolveConfig& c, const RunState& st, const std::string& dir) {
   write_file_atomic((fs::path(dir) / "log.csv").string(),
-                    [&](std::ostream& o) { write_log_csv(o, st.history); });
+                    [&](std::ostream& o) { write_log_csv(o, st.history, c.reevaluate.every_generation); });
   write_file_atomic((fs::path(dir) / "fitness.svg").string(),
                     [&](std::ostream& o) { write_fitness_svg(o, c.name, st.history); });
   write_file_atomic((fs::path(dir) / "checkpoint.json").string(), checkpoint_json(st).dump(1) + "\n");
@@ -159,6 +159,17 @@ std::pair<std::vector<RunScore>, std::vector<RunScore>> split_held_out(
   return out;
 }
 
+std::vector<RunScore> arena_runs(const std::vector<RunScore>& scores, std::size_t i,
+                                 const std::vector<EvalSetting>& settings,
+                                 const std::vector<EvalCase>& cases) {
+  std::vector<RunScore> out;
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    const EvalSetting& s = settings[cases[k].setting];
+    if (s.family >= 0 && !s.held_out) out.push_back(scores[i * cases.size() + k]);
+  }
+  return out;
+}
+
 Budget effective_budget(const EvolveConfig& c, const std::optional<int>& generations) {
   if (generations) return Budget{*generations, 0, 0.0};
   return c.budget;
@@ -167,6 +178,7 @@ Budget effective_budget(const EvolveConfig& c, const std::optional<int>& generat
 std::vector<RunScore> evaluate_batch(const CaseObjective& f, const std::vector<Decoded>& candidates,
                                      const std::vector<EvalCase>& cases, BatchEvaluator& evaluator,
                                      const BatchProgress& progress) {
+  f.prepare(cases);  // e.g. draws the batch's arenas once each, in parallel
   // the batch: each case's simulation once, each valid candidate once, a task per pair
   SimBatch batch;
   std::vector<CaseSimulation> sims;
@@ -255,6 +267,8 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   const auto stop_reason = [&] { return budget_stop(budget, st, clock.elapsed(), opt->done()); };
 
   const auto keep = static_cast<std::size_t>(c.reevaluate.top_k);
+  // the validation set: the re-evaluation cases (fresh seeds, validation arenas); the same all run long
+  result.reevaluation_cases = reevaluation_cases(result.settings, c.reevaluate.seeds, c.seed);
   std::string reason;
   while ((reason = stop_reason()).empty()) {
     const std::int64_t gen = st.generation;
@@ -289,6 +303,23 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
     rec.best_so_far = st.history.empty() ? rec.best : std::min(st.history.back().best_so_far, rec.best);
     book_tuned_values(rec, c.genome, decoded, best);
     update_elites(st.elites, c.genome, xs, decoded, stats, gen, keep);
+    // how the generation's best fares on the validation set (over- or underfitting, in log.csv)
+    if (c.reevaluate.every_generation) {
+      std::size_t b = xs.size();
+      for (std::size_t i = 0; i < xs.size(); ++i) {
+        if (decoded[i].violation.empty() && (b == xs.size() || fitness[i] < fitness[b])) b = i;
+      }
+      if (b < xs.size()) {
+        const std::vector<RunScore> v =
+            evaluate_batch(f, {decoded[b]}, result.reevaluation_cases, evaluator, o.progress);
+        const CandidateStats vs =
+            summarise(split_held_out(v, 0, result.settings, result.reevaluation_cases).first);
+        rec.validation_runs = vs.runs;
+        rec.validation_fitness = vs.fitness;
+        rec.validation_success_rate = vs.success_rate;
+        st.runs += static_cast<std::int64_t>(vs.runs);
+      }
+    }
     for (const Decoded& d : decoded) {
       if (d.violation.empty()) st.runs += static_cast<std::int64_t>(nc);
     }
@@ -305,7 +336,6 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   if (st.elites.empty()) {
     throw std::runtime_error("no valid candidate to report: every candidate broke a constraint");
   }
-  result.reevaluation_cases = reevaluation_cases(result.settings, c.reevaluate.seeds, c.seed);
   std::vector<Decoded> finalists;
   for (const Elite& e : st.elites) finalists.push_back(decode(c.genome, e.x));
   // the base params run last on the same cases, as a reference (never chosen)
@@ -317,7 +347,8 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   for (std::size_t i = 0; i < finalists.size(); ++i) {
     const auto [train, held] = split_held_out(scores, i, result.settings, result.reevaluation_cases);
     const bool base = i + 1 == finalists.size();
-    Finalist fin{base ? Elite{} : st.elites[i], finalists[i].params, summarise(train), summarise(held)};
+    Finalist fin{base ? Elite{} : st.elites[i], finalists[i].params, summarise(train), summarise(held),
+                 summarise(arena_runs(scores, i, result.settings, result.reevaluation_cases))};
     if (base) {
       result.base = std::move(fin);
       break;

@@ -52,6 +52,7 @@ struct Finalist {
   sim::Params params;          ///< decoded (repaired)
   CandidateStats reevaluated;  ///< on fresh seeds of the training settings: what picks the best
   CandidateStats held_out;     ///< on the held-out settings (runs == 0 when there are none)
+  CandidateStats arenas;       ///< on the validation arenas alone (runs == 0 without families)
 };
 
 struct RunResult {
@@ -110,6 +111,11 @@ std::string budget_stop(const Budget& b, const RunState& st, double seconds, boo
 
 /// Each candidate's summary over its cases (scores as evaluate_batch returns them).
 std::vector<CandidateStats> candidate_stats(const std::vector<RunScore>& scores, std::size_t candidates);
+
+/// Candidate i's runs of a batch on `cases` that were on drawn arenas, in case order.
+std::vector<RunScore> arena_runs(const std::vector<RunScore>& scores, std::size_t i,
+                                 const std::vector<EvalSetting>& settings,
+                                 const std::vector<EvalCase>& cases);
 
 /// Candidate i's runs of a batch on `cases` (scores as evaluate_batch returns them), split into
 /// those of training settings (first) and of held-out ones (second), each in case order.

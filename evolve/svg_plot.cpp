@@ -113,10 +113,11 @@ void write_line_chart(std::ostream& out, const std::string& title, const std::st
     if (s.values.empty()) continue;
     out << "<polyline fill=\"none\" stroke=\"" << s.color << "\" stroke-width=\"2\" points=\"";
     for (std::size_t i = 0; i < s.values.size(); ++i) {
-      out << a.px(static_cast<double>(i)) << ',' << a.py(s.values[i]) << ' ';
+      if (std::isfinite(s.values[i])) out << a.px(static_cast<double>(i)) << ',' << a.py(s.values[i]) << ' ';
     }
     out << "\"/>\n";
     for (std::size_t i = 0; i < s.values.size(); ++i) {
+      if (!std::isfinite(s.values[i])) continue;  // a generation without this value
       out << "<circle cx=\"" << a.px(static_cast<double>(i)) << "\" cy=\"" << a.py(s.values[i])
           << "\" r=\"2.5\" fill=\"" << s.color << "\"/>\n";
     }

@@ -78,20 +78,11 @@ void mirror(Draft& d, bool flip_x, bool flip_y) {
 
 std::string header(const ArenaSpec& spec, std::uint64_t seed, const Draft& d, const Scenario& s,
                    double astar8_m, int draws) {
-  const std::string settings = spec.settings_text();
   std::string h = "# Arena \"" + s.name + "\": family " + std::string(spec.family->name) + ", seed " +
                   std::to_string(seed) + ", drawn by the swarmpath arena generator (version " +
                   std::to_string(kGeneratorVersion) + "; draw " + std::to_string(draws) + " of at most " +
                   std::to_string(kMaxDraws) + ").\n";
-  h += "#   swarmpath arena generate --family " + std::string(spec.family->name) + " --seed " +
-       std::to_string(seed);
-  if (!settings.empty()) {
-    std::string args = settings;
-    for (std::size_t pos = 0; (pos = args.find(' ', pos)) != std::string::npos; pos += 7)
-      args.replace(pos, 1, " --set ");
-    h += " --set " + args;
-  }
-  h += "\n";
+  h += "#   " + spec.command_line(seed) + "\n";
   if (!d.note.empty()) h += "# " + d.note + ".\n";
   const double ratio = astar8_m / empty_arena_astar8(s);
   h += "# A*-8 on the 1 cm grid with 8.5 cm inflation (SPEC §4.5): " +
@@ -150,6 +141,16 @@ std::string ArenaSpec::settings_text() const {
   for (std::size_t i = 0; i < params.size(); ++i) {
     if (values[i] != params[i].fallback)
       s += (s.empty() ? "" : " ") + std::string(params[i].name) + "=" + fmt(values[i]);
+  }
+  return s;
+}
+
+std::string ArenaSpec::command_line(std::uint64_t seed) const {
+  std::string s =
+      "swarmpath arena generate --family " + std::string(family->name) + " --seed " + std::to_string(seed);
+  const std::vector<FamilyParam> params = all_params(*family);
+  for (std::size_t i = 0; i < params.size(); ++i) {
+    if (values[i] != params[i].fallback) s += " --set " + std::string(params[i].name) + "=" + fmt(values[i]);
   }
   return s;
 }

@@ -67,6 +67,9 @@ struct ArenaSpec {
   /// The parameters that differ from their defaults, as "key=value" joined by spaces.
   std::string settings_text() const;
 
+  /// "swarmpath arena generate --family F --seed S --set key=value ...": the command that draws it.
+  std::string command_line(std::uint64_t seed) const;
+
   /// Every parameter as (name, value), sorted by name (a scenario's ArenaOrigin::params).
   std::vector<std::pair<std::string, double>> sorted_params() const;
 
