@@ -5,12 +5,16 @@
 #   make asan     only the ASan + UBSan build and tests
 #   make bench    build (release) and run the benchmarks (the viewer's drawing speed too)
 #   make format   clang-format every source file in place
+#   make verify-genomes  (not in CI: minutes) re-run every shipped tuned genome (genomes/tuned.toml)
+#                 against the default on fresh seeds and arenas: does each still win?
+#   make benchmark       (not in CI: about half an hour on 2 cores) the generalisation benchmark of
+#                 genomes/paper.toml, into results/benchmark/
 
 JOBS ?= $(shell nproc)
 SOURCES := $(shell git ls-files --cached --others --exclude-standard 'sim/*.cpp' 'sim/*.hpp' 'evolve/*.cpp' 'evolve/*.hpp' 'app/*.cpp' 'app/*.hpp' \
              'tests/*.cpp' 'tests/*.hpp' 'bench/*.cpp' 'bench/*.hpp' 2>/dev/null)
 
-.PHONY: all build run test asan bench format format-check clean
+.PHONY: all build run test asan bench format format-check clean verify-genomes benchmark
 
 all: build
 
@@ -45,6 +49,14 @@ bench: build
 		--benchmark_report_aggregates_only=true
 	./build/release/bench/growth 15
 	bash scripts/viewer_speed.sh
+
+verify-genomes: build
+	./build/release/swarmpath verify --manifest genomes/tuned.toml --threads $(JOBS)
+
+benchmark: build
+	@mkdir -p results/benchmark
+	./build/release/swarmpath benchmark --config configs/benchmarks/generalisation.toml --params genomes/paper.toml \
+	  --threads $(JOBS) --json results/benchmark/paper.json --md results/benchmark/paper.md --svg results/benchmark/paper.svg
 
 format:
 	clang-format -i $(SOURCES)

@@ -63,6 +63,17 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     CLI::App* c = app.add_subcommand("arena", "Draw arenas from families (generate) and list the families.");
     commands.push_back({c, add_arena(*c)});
   }
+  {
+    CLI::App* c = app.add_subcommand(
+        "benchmark",
+        "Measure a params file (or two) on a benchmark of generated arenas and the paper arenas.");
+    commands.push_back({c, add_benchmark(*c, evaluators)});
+  }
+  {
+    CLI::App* c = app.add_subcommand(
+        "verify", "Re-run each shipped tuned genome against the default on fresh seeds: does it still win?");
+    commands.push_back({c, add_verify(*c, evaluators)});
+  }
 
   {
     CLI::App* c = app.add_subcommand(

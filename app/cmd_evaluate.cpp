@@ -143,6 +143,7 @@ int run_evaluate(const EvaluateOptions& o, const evolve::EvaluatorFactory& evalu
         grid.push_back({s, n, mode, o.seed_base + static_cast<std::uint64_t>(k)});
     }
   }
+  note_benchmark_arenas(scenarios, err);
   std::vector<double> astar(scenarios.size());
   for (std::size_t s = 0; s < scenarios.size(); ++s) {
     const sim::AStarResult a = sim::astar(scenarios[s]);

@@ -163,8 +163,8 @@ int run_evolve(const EvolveOptions& o, const evolve::EvaluatorFactory& evaluator
       << (families > 0
               ? ", " + std::to_string(families) + " family x robots settings on fresh arenas every generation"
               : std::string())
-      << "), optimiser " << c.optimizer.name << ", budget " << budget_text(budget) << ", " << evaluator->describe()
-      << " -> " << dir << "\n";
+      << "), optimiser " << c.optimizer.name << ", budget " << budget_text(budget) << ", "
+      << evaluator->describe() << " -> " << dir << "\n";
 
   const bool tty = stderr_is_terminal();
   const Stopwatch clock;

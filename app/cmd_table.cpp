@@ -91,6 +91,7 @@ int run_table(const TableOptions& o, const evolve::EvaluatorFactory& evaluators,
   const sim::Params p = params_or_defaults(o.params);
   std::vector<sim::Scenario> scenarios;
   for (const std::string& f : files) scenarios.push_back(scenario_with_overrides(f, {}, o.ticks));
+  note_benchmark_arenas(scenarios, err);
   const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
   if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
 

@@ -26,5 +26,7 @@ Runner add_export(CLI::App& app);
 Runner add_arena(CLI::App& app);
 Runner add_view(CLI::App& app);
 Runner add_report(CLI::App& app);
+Runner add_benchmark(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
+Runner add_verify(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
 
 }  // namespace swarmpath::app

@@ -3,9 +3,11 @@
 
 #include <cmath>
 #include <iomanip>
+#include <ostream>
 #include <sstream>
 #include <unistd.h>
 
+#include "sim/arenas/registry.hpp"
 #include "sim/config_error.hpp"
 
 namespace swarmpath::app {
@@ -68,6 +70,17 @@ void add_path_json(nlohmann::ordered_json& j, const sim::Metrics& m) {
     j["ticks_to_allocate"] = tick_or_null(m.ticks_to_allocate);
     j["recruited"] = m.recruited;  // rest_recruit: resting robots that closed the chain (in `allocated`)
   }
+}
+
+void note_benchmark_arenas(const std::vector<sim::Scenario>& scenarios, std::ostream& err) {
+  std::string names;
+  for (const sim::Scenario& s : scenarios) {
+    if (s.origin && sim::arenas::is_benchmark_seed(s.origin->seed))
+      names += (names.empty() ? "" : ", ") + s.name;
+  }
+  if (names.empty()) return;
+  err << "note: " << names << " were drawn from benchmark seeds: report these results, but never choose a "
+      << "controller, a rule or a parameter by them (docs/generalisation.md)\n";
 }
 
 std::string fixed(double v, int digits) {

@@ -4,8 +4,10 @@
 
 #include <chrono>
 #include <cstdint>
+#include <iosfwd>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -32,6 +34,10 @@ sim::Scenario scenario_with_overrides(const std::string& path, std::optional<std
 
 /// Adds the path-formation fields of `simulate --json` (success, ticks_to_form, path lengths...).
 void add_path_json(nlohmann::ordered_json& j, const sim::Metrics& m);
+
+/// Says on `err` which of `scenarios` were drawn from a benchmark's seed: measuring on them is
+/// what a benchmark is for, screening or tuning on them is not (docs/generalisation.md).
+void note_benchmark_arenas(const std::vector<sim::Scenario>& scenarios, std::ostream& err);
 
 /// Fixed-point text with `digits` decimals.
 std::string fixed(double v, int digits);

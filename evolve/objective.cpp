@@ -60,7 +60,10 @@ std::vector<EvalCase> reevaluation_cases(const std::vector<EvalSetting>& setting
 }
 
 SwarmObjective::SwarmObjective(const EvolveConfig& c)
-    : families_(c.evaluation.families), max_ticks_(c.evaluation.max_ticks), mode_(c.mode), weights_(c.fitness) {
+    : families_(c.evaluation.families),
+      max_ticks_(c.evaluation.max_ticks),
+      mode_(c.mode),
+      weights_(c.fitness) {
   const auto add = [&](const ScenarioRef& ref, bool held_out) {
     sim::Scenario s = sim::load_scenario(ref.path);
     if (c.evaluation.max_ticks) s = sim::with_max_ticks(s, *c.evaluation.max_ticks, c.file);
@@ -82,8 +85,8 @@ SwarmObjective::SwarmObjective(const EvolveConfig& c)
     for (const int n : e.robots) {
       settings_.push_back({std::string(e.spec.family->name), n, false, static_cast<int>(f), e.arenas, e.seeds,
                            c.reevaluate.arenas});
-      infos_.push_back({max_ticks_.value_or(sim::SimSettings{}.max_ticks), std::numeric_limits<double>::quiet_NaN(),
-                        n, mode_});
+      infos_.push_back({max_ticks_.value_or(sim::SimSettings{}.max_ticks),
+                        std::numeric_limits<double>::quiet_NaN(), n, mode_});
       scenarios_.emplace_back();
     }
   }
@@ -100,7 +103,8 @@ std::shared_ptr<const SwarmObjective::Drawn> SwarmObjective::draw(int family, st
   const sim::arenas::GeneratedArena a = sim::arenas::generate_arena(e.spec, seed);
   const sim::Scenario s = max_ticks_ ? sim::with_max_ticks(a.scenario, *max_ticks_) : a.scenario;
   auto d = std::make_shared<Drawn>();
-  for (const int n : e.robots) d->scenarios.emplace_back(n, std::make_shared<const sim::Scenario>(sim::with_robots(s, n)));
+  for (const int n : e.robots)
+    d->scenarios.emplace_back(n, std::make_shared<const sim::Scenario>(sim::with_robots(s, n)));
   d->astar_tu = sim::to_tu(a.astar8_m);
   d->max_ticks = s.sim.max_ticks;
   return d;

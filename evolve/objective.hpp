@@ -124,6 +124,7 @@ class SwarmObjective final : public CaseObjective {
     double astar_tu = 0.0;
     std::int64_t max_ticks = 0;
   };
+
   using ArenaKey = std::pair<int, std::uint64_t>;  // (family entry, arena seed)
 
   std::shared_ptr<const Drawn> draw(int family, std::uint64_t seed) const;

@@ -18,18 +18,9 @@ namespace {
 using cli_support::cli;
 namespace fs = std::filesystem;
 
-fs::path temp_dir() {
-  const fs::path dir = fs::temp_directory_path() / ("swarmpath_cli_arena_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  return dir;
-}
+fs::path temp_dir() { return cli_support::temp_dir("cli_arena_test"); }
 
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+std::string read(const fs::path& p) { return cli_support::read_file(p); }
 
 TEST(CliArena, GenerateWritesTheSameFileForTheSameSeedAndAPicture) {
   const fs::path dir = temp_dir();

@@ -162,11 +162,12 @@ TEST(FamilyTuning, CasesDrawFreshArenasEveryGenerationSharedAcrossRobotCounts) {
   // the objective scores a case the same whether its arena was prepared or drawn on demand
   const SwarmObjective fresh(c);
   const RunScore unprepared = fresh.evaluate(c.genome.base, g0[4]);
-  f.prepare(g0, 2);
+  f.prepare(g0);
   const RunScore prepared = f.evaluate(c.genome.base, g0[4]);
   EXPECT_EQ(prepared.fitness, unprepared.fitness);
-  EXPECT_EQ(f.scenario(g0[2]).robots, 10);
-  EXPECT_EQ(f.scenario(g0[2]).origin->seed, g0[2].arena_seed);
+  EXPECT_EQ(f.simulation(g0[2]).scenario->robots, 10);
+  EXPECT_EQ(f.simulation(g0[2]).scenario, f.simulation(g0[2]).scenario);  // one shared scenario per arena
+  EXPECT_EQ(f.simulation(g0[2]).scenario->origin->seed, g0[2].arena_seed);
   EXPECT_GT(f.astar_tu(g0[2]), 0.0);
 }
 

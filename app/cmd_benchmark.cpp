@@ -1,0 +1,269 @@
+// SPDX-License-Identifier: MIT
+// swarmpath benchmark: runs a benchmark of generated arenas (configs/benchmarks/*.toml) and the
+// paper arenas beside it with one params file, or two on the same runs, and reports per family
+// and overall: success with and without task allocation, time to form, path / A*, resource
+// reduction (markdown, JSON, SVG). For measuring a chosen genome, never for choosing one.
+#include <memory>
+#include <ostream>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+#include <omp.h>
+
+#include "benchmark_config.hpp"
+#include "benchmark_report.hpp"
+#include "cli.hpp"
+#include "commands.hpp"
+#include "common.hpp"
+#include "evolve/atomic_write.hpp"
+#include "evolve/path_collision.hpp"
+#include "experiment.hpp"
+#include "sim/astar.hpp"
+#include "sim/config_error.hpp"
+#include "table_output.hpp"
+#include "table_report.hpp"
+
+namespace swarmpath::app {
+
+namespace {
+
+struct BenchmarkOptions {
+  std::string config = "configs/benchmarks/generalisation.toml";
+  std::string params;
+  std::string against;
+  std::string mode = "both";
+  std::vector<std::string> families;  // only these (default: all)
+  bool no_paper = false;
+  int threads = 0;
+  std::string json, markdown, svg;
+};
+
+// the arenas of the benchmark, drawn in parallel (each a pure function of family, parameters, seed)
+std::vector<sim::arenas::GeneratedArena> draw_arenas(const std::vector<const BenchmarkFamily*>& families,
+                                                     int threads) {
+  std::vector<std::pair<const BenchmarkFamily*, std::uint64_t>> todo;
+  for (const BenchmarkFamily* f : families) {
+    for (const std::uint64_t s : f->seeds) todo.emplace_back(f, s);
+  }
+  std::vector<sim::arenas::GeneratedArena> out(todo.size());
+  std::vector<std::string> errors(todo.size());
+  const auto n = static_cast<std::int64_t>(todo.size());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    try {
+      out[k] = sim::arenas::generate_arena(todo[k].first->spec, todo[k].second);
+    } catch (const std::exception& e) {
+      errors[k] = e.what();
+    }
+  }
+  for (const std::string& e : errors) {
+    if (!e.empty()) throw std::runtime_error("drawing a benchmark arena failed: " + e);
+  }
+  return out;
+}
+
+int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& evaluators, std::ostream& out,
+                  std::ostream& err) {
+  const BenchmarkConfig c = load_benchmark_config(o.config);
+  const bool both = o.mode == "both";
+  const std::vector<sim::Mode> modes =
+      both ? std::vector<sim::Mode>{sim::Mode::kPathFormation, sim::Mode::kTaskAllocation}
+           : std::vector<sim::Mode>{mode_from_option(o.mode)};
+  if (!both && modes[0] == sim::Mode::kDiffusion)
+    throw sim::ConfigError("--mode", 0, "", "must be pf, ta or both");
+  const bool pf = both || modes[0] == sim::Mode::kPathFormation;
+  const bool ta = both || modes[0] == sim::Mode::kTaskAllocation;
+  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
+  const bool two = !o.against.empty();
+  evolve::check_output_paths({{"--params", o.params}, {"--against", o.against}, {"--config", o.config}},
+                             {{"--json", o.json}, {"--md", o.markdown}, {"--svg", o.svg}});
+  const sim::Params pa = params_or_defaults(o.params);
+  const sim::Params pb = two ? sim::load_params(o.against) : sim::Params{};
+
+  // the families asked for, then their arenas and the paper arenas, as one scenario list
+  std::vector<const BenchmarkFamily*> chosen;
+  std::vector<std::string> groups;
+  for (const BenchmarkFamily& f : c.families) {
+    const std::string name(f.spec.family->name);
+    if (!o.families.empty() && std::find(o.families.begin(), o.families.end(), name) == o.families.end())
+      continue;
+    chosen.push_back(&f);
+    if (std::find(groups.begin(), groups.end(), name) == groups.end()) groups.push_back(name);
+  }
+  for (const std::string& f : o.families) {
+    if (std::find(groups.begin(), groups.end(), f) == groups.end()) {
+      throw sim::ConfigError("--families", 0, "", "\"" + f + "\" is not a family of " + c.file);
+    }
+  }
+  const Stopwatch clock;
+  err << "swarmpath benchmark: " << c.name << " v" << c.version << " (" << c.file << "): drawing arenas\n";
+  const std::vector<sim::arenas::GeneratedArena> arenas = draw_arenas(chosen, threads);
+  std::vector<sim::Scenario> scenarios;
+  std::vector<std::string> group_of;
+  std::vector<double> astar8;
+  nlohmann::ordered_json arena_list = nlohmann::ordered_json::array();
+  for (const sim::arenas::GeneratedArena& a : arenas) {
+    scenarios.push_back(sim::with_max_ticks(a.scenario, c.max_ticks, c.file));
+    group_of.push_back(a.scenario.origin->family);
+    astar8.push_back(sim::to_tu(a.astar8_m));
+    arena_list.push_back({{"name", a.scenario.name},
+                          {"family", a.scenario.origin->family},
+                          {"seed", a.scenario.origin->seed},
+                          {"class", std::string(sim::to_string(a.scenario.env_class))},
+                          {"astar8_tu", sim::to_tu(a.astar8_m)}});
+  }
+  if (!o.no_paper) {
+    for (const std::string& f : c.paper) {
+      scenarios.push_back(scenario_with_overrides(f, {}, c.max_ticks));
+      group_of.push_back("paper");
+      const sim::AStarResult a = sim::astar(scenarios.back());
+      astar8.push_back(a.found ? sim::to_tu(a.length_m) : std::nan(""));
+    }
+  }
+
+  const std::vector<GridCase> grid = make_grid(scenarios.size(), c.robots, modes, c.seeds, c.seed_base);
+  const bool tty = stderr_is_terminal();
+  std::size_t last = 0;
+  const GridProgress progress = [&](std::size_t done, std::size_t total) {
+    if (tty) {
+      err << "\r  " << done << " / " << total << " runs, " << fixed(clock.seconds(), 0) << " s   "
+          << std::flush;
+    } else if (done == total || done >= last + std::max<std::size_t>(1, total / 10)) {
+      last = done;
+      err << "  " << done << " / " << total << " runs, " << fixed(clock.seconds(), 0) << " s\n";
+    }
+  };
+  err << "  " << arenas.size() << " arenas of " << groups.size() << " families"
+      << (o.no_paper ? "" : " and " + std::to_string(scenarios.size() - arenas.size()) + " paper arenas")
+      << " x " << c.robots.size() << " robot counts x " << modes.size() << " modes x " << c.seeds
+      << " seeds = " << grid.size() << " runs" << (two ? " per params file (x 2, the same runs)" : "")
+      << "\n";
+  const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
+  const std::vector<std::vector<GridRun>> runs =
+      run_grid(scenarios, grid, two ? std::vector<sim::Params>{pa, pb} : std::vector<sim::Params>{pa},
+               *evaluator, progress);
+  const std::vector<GridRun>& ra = runs[0];
+  const std::vector<GridRun> rb = two ? runs[1] : std::vector<GridRun>{};
+  if (tty) err << "\n";
+  err << "  done in " << fixed(clock.seconds(), 1) << " s: " << evaluator->summary() << "\n";
+
+  const std::string name_a = o.params.empty() ? "the defaults" : o.params;
+  const std::vector<BenchmarkRow> rows_a = benchmark_rows(groups, group_of, astar8, ra);
+  std::ostringstream md;
+  md << "## " << c.name << " benchmark v" << c.version << ": " << name_a << "\n\n"
+     << arenas.size() << " arenas of " << groups.size() << " families (seeds in " << c.file << ")"
+     << (o.no_paper ? "" : " and the paper arenas") << ", robots " <<
+      [&] {
+        std::string s;
+        for (const int n : c.robots) s += (s.empty() ? "" : ", ") + std::to_string(n);
+        return s;
+      }()
+     << ", " << c.seeds << " seed" << (c.seeds > 1 ? "s" : "") << " from " << c.seed_base << ", T_max "
+     << c.max_ticks << (both ? "; the same runs with and without TA" : "") << ".\n\n";
+  write_benchmark_markdown(md, rows_a, pf, ta);
+  nlohmann::ordered_json j;
+  j["benchmark"] = {{"name", c.name},           {"version", c.version},
+                    {"file", c.file},           {"generator_version", sim::arenas::kGeneratorVersion},
+                    {"robots", c.robots},       {"seeds", c.seeds},
+                    {"seed_base", c.seed_base}, {"max_ticks", c.max_ticks},
+                    {"mode", o.mode},           {"arenas", arena_list}};
+  j["params"] = {{"file", name_a}, {"rows", benchmark_rows_json(rows_a)}};
+  std::vector<BarSet> bars;
+  const auto success = [](const std::vector<BenchmarkRow>& rows, bool with_ta) {
+    std::vector<double> v;
+    for (const BenchmarkRow& r : rows) v.push_back(with_ta ? r.ta.success_rate : r.pf.success_rate);
+    return v;
+  };
+  if (pf) bars.push_back({"A without TA", "#7a9cc6", success(rows_a, false)});
+  if (ta) bars.push_back({"A with TA", "#1f4e8c", success(rows_a, true)});
+  if (two) {
+    const std::vector<BenchmarkRow> rows_b = benchmark_rows(groups, group_of, astar8, rb);
+    const std::vector<BenchmarkDifference> d = benchmark_differences(groups, group_of, ra, rb);
+    const auto all = [](const auto& v) {
+      return *std::find_if(v.begin(), v.end(), [](const auto& r) { return r.group == "all families"; });
+    };
+    const Verdict verdict = benchmark_verdict(all(rows_a), all(rows_b), all(d), pf, ta);
+    md << "\n## " << o.against << " on the same runs\n\n";
+    write_benchmark_markdown(md, rows_b, pf, ta);
+    md << "\n## A = " << name_a << " against B = " << o.against << "\n\n";
+    write_difference_markdown(md, rows_a, rows_b, d, pf, ta);
+    md << "\n**" << (verdict.wins ? "A beats B" : "A does not beat B") << "** on the benchmark's families ("
+       << verdict.text << ").\n";
+    j["against"] = {{"file", o.against}, {"rows", benchmark_rows_json(rows_b)}};
+    j["differences"] = benchmark_differences_json(d);
+    j["verdict"] = {{"params_beats_against", verdict.wins}, {"text", verdict.text}};
+    if (pf) bars.push_back({"B without TA", "#f4b183", success(rows_b, false)});
+    if (ta) bars.push_back({"B with TA", "#c55a11", success(rows_b, true)});
+  }
+  // the paper arenas' own table beside, from the table machinery
+  if (!o.no_paper && !c.paper.empty()) {
+    std::vector<sim::Scenario> paper(scenarios.begin() + static_cast<std::ptrdiff_t>(arenas.size()),
+                                     scenarios.end());
+    std::vector<double> paper_astar(astar8.begin() + static_cast<std::ptrdiff_t>(arenas.size()),
+                                    astar8.end());
+    std::vector<GridRun> paper_runs;
+    for (const GridRun& r : ra) {
+      if (r.c.scenario < arenas.size()) continue;
+      GridRun p = r;
+      p.c.scenario -= arenas.size();
+      paper_runs.push_back(p);
+    }
+    md << "\n## The paper arenas with " << name_a << "\n\n";
+    if (both) {
+      write_markdown(md,
+                     compare(summarise(paper, paper_astar, runs_of(paper_runs, sim::Mode::kPathFormation),
+                                       sim::Mode::kPathFormation),
+                             summarise(paper, paper_astar, runs_of(paper_runs, sim::Mode::kTaskAllocation),
+                                       sim::Mode::kTaskAllocation)));
+    } else {
+      write_markdown(md, summarise(paper, paper_astar, paper_runs, modes[0]));
+    }
+  }
+  std::vector<std::string> labels;
+  for (const BenchmarkRow& r : rows_a) labels.push_back(r.group);
+  if (!o.svg.empty()) {
+    evolve::write_file_atomic(o.svg, [&](std::ostream& s) {
+      write_success_svg(s, c.name + " benchmark v" + std::to_string(c.version),
+                        "success rate per family; A = " + name_a + (two ? ", B = " + o.against : ""), labels,
+                        bars);
+    });
+  }
+  if (!o.json.empty()) {
+    // every run, with the table machinery's fields
+    j["table"] =
+        both ? comparison_json(scenarios, astar8, ra,
+                               compare(summarise(scenarios, astar8, runs_of(ra, sim::Mode::kPathFormation),
+                                                 sim::Mode::kPathFormation),
+                                       summarise(scenarios, astar8, runs_of(ra, sim::Mode::kTaskAllocation),
+                                                 sim::Mode::kTaskAllocation)))
+             : table_json(scenarios, astar8, ra, summarise(scenarios, astar8, ra, modes[0]));
+    evolve::write_file_atomic(o.json, j.dump(2) + "\n");
+  }
+  if (!o.markdown.empty()) evolve::write_file_atomic(o.markdown, md.str());
+  out << md.str();
+  return kExitOk;
+}
+
+}  // namespace
+
+Runner add_benchmark(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
+  auto o = std::make_shared<BenchmarkOptions>();
+  app.add_option("--config", o->config, "Benchmark file")->capture_default_str();
+  app.add_option("--params", o->params, "Params file to measure (default: the code's defaults)");
+  app.add_option("--against", o->against, "A second params file, on the same runs (e.g. genomes/paper.toml)");
+  app.add_option("--mode", o->mode, "pf, ta or both (each run with and without task allocation)")
+      ->capture_default_str();
+  app.add_option("--families", o->families, "Only these families, e.g. wall-gap,rooms")->delimiter(',');
+  app.add_flag("--no-paper", o->no_paper, "Leave out the paper arenas");
+  app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");
+  app.add_option("--json", o->json, "Write the rows, the arenas and every run as JSON");
+  app.add_option("--md", o->markdown, "Write the markdown report to this file too");
+  app.add_option("--svg", o->svg, "Draw the success rates per family");
+  return [o, evaluators](std::ostream& out, std::ostream& err) {
+    return run_benchmark(*o, evaluators, out, err);
+  };
+}
+
+}  // namespace swarmpath::app
