@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -11,12 +12,36 @@
 
 namespace {
 
+// srun -n N without an MPI plugin starts N copies that each run the whole job into the same
+// files: refuse ("" when this is not such a copy)
+std::string separate_srun_copy() {
+  const char* tasks = std::getenv("SLURM_STEP_NUM_TASKS");
+  if (!tasks || std::atoi(tasks) < 2 || !std::getenv("SLURM_PROCID")) return "";
+  return std::string("error: srun started ") + tasks + " tasks (this is task " + std::getenv("SLURM_PROCID") +
+         ") that do not form an MPI job: each would run the whole command into the same files. " +
+#ifdef SWARMPATH_HAS_MPI
+         "Start them with 'srun --mpi=pmix' (see 'srun --mpi=list') or mpirun, or run one task with --threads"
+#else
+         "This build has no MPI backend: run one task with --threads, or build with Open MPI (docs/mpi.md)"
+#endif
+         "\n";
+}
+
 // the command, in this process or, under mpirun or srun, as rank 0 of the job (every rank runs
 // simulations; the others return 0)
 int run(int argc, char** argv) {
   const std::vector<std::string> args(argv + 1, argv + argc);
 #ifdef SWARMPATH_HAS_MPI
-  if (swarmpath::mpi::launched_by_mpi()) {
+  const bool mpi = swarmpath::mpi::launched_by_mpi();
+#else
+  const bool mpi = false;
+#endif
+  if (const std::string copy = separate_srun_copy(); !mpi && !copy.empty()) {
+    std::cerr << copy;
+    return swarmpath::app::kExitBadInput;
+  }
+#ifdef SWARMPATH_HAS_MPI
+  if (mpi) {
     return swarmpath::mpi::run_job(
         argc, argv,
         [&](const swarmpath::evolve::EvaluatorFactory& evaluators) {

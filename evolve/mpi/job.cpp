@@ -4,9 +4,11 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <map>
 #include <mpi.h>
 #include <ostream>
 #include <string>
+#include <unistd.h>
 #include <vector>
 
 #include "evolve/mpi/channel.hpp"
@@ -39,28 +41,64 @@ int slurm_tasks() {
   return n ? std::atoi(n) : 0;
 }
 
-// every rank's reference hash and host on rank 0; the ranks that differ from rank 0, or ""
-std::string disagreeing_ranks(int rank, int size) {
+// what rank 0 knows of every rank: its reference hash, its host and that host's cores
+struct Ranks {
+  std::vector<std::uint64_t> hashes;
+  std::vector<std::string> hosts;
+  std::vector<int> cores;
+};
+
+Ranks gather_ranks(int rank, int size) {
   const std::uint64_t mine = reference_hash();
-  std::vector<std::uint64_t> hashes(static_cast<std::size_t>(rank == 0 ? size : 0));
+  const auto n = static_cast<std::size_t>(rank == 0 ? size : 0);
+  std::vector<std::uint64_t> hashes(n);
   MPI_Gather(&mine, 1, MPI_UINT64_T, hashes.data(), 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+  const int cores = static_cast<int>(std::max(1L, sysconf(_SC_NPROCESSORS_ONLN)));
+  std::vector<int> all_cores(n);
+  MPI_Gather(&cores, 1, MPI_INT, all_cores.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
   char host[MPI_MAX_PROCESSOR_NAME] = {};
   int length = 0;
   MPI_Get_processor_name(host, &length);
-  std::vector<char> hosts(rank == 0 ? static_cast<std::size_t>(size) * MPI_MAX_PROCESSOR_NAME : 0);
-  MPI_Gather(host, MPI_MAX_PROCESSOR_NAME, MPI_CHAR, hosts.data(), MPI_MAX_PROCESSOR_NAME, MPI_CHAR, 0,
+  std::vector<char> names(n * MPI_MAX_PROCESSOR_NAME);
+  MPI_Gather(host, MPI_MAX_PROCESSOR_NAME, MPI_CHAR, names.data(), MPI_MAX_PROCESSOR_NAME, MPI_CHAR, 0,
              MPI_COMM_WORLD);
-  std::string bad;
-  for (int r = 1; r < size && rank == 0; ++r) {
-    if (hashes[static_cast<std::size_t>(r)] == hashes[0]) continue;
-    const char* h = hosts.data() + static_cast<std::size_t>(r) * MPI_MAX_PROCESSOR_NAME;
-    bad += (bad.empty() ? "" : ", ") + std::to_string(r) + " (" +
-           std::string(h, strnlen(h, MPI_MAX_PROCESSOR_NAME)) + ")";
+  Ranks out{std::move(hashes), {}, std::move(all_cores)};
+  for (std::size_t r = 0; r < n; ++r) {
+    const char* h = names.data() + r * MPI_MAX_PROCESSOR_NAME;
+    out.hosts.emplace_back(h, strnlen(h, MPI_MAX_PROCESSOR_NAME));
   }
-  if (!bad.empty())
-    bad +=
-        " against rank 0 (" + std::string(hosts.data(), strnlen(hosts.data(), MPI_MAX_PROCESSOR_NAME)) + ")";
+  return out;
+}
+
+// the ranks whose reference hash differs from rank 0's, or ""
+std::string disagreeing_ranks(const Ranks& ranks) {
+  std::string bad;
+  for (std::size_t r = 1; r < ranks.hashes.size(); ++r) {
+    if (ranks.hashes[r] == ranks.hashes[0]) continue;
+    bad += (bad.empty() ? "" : ", ") + std::to_string(r) + " (" + ranks.hosts[r] + ")";
+  }
+  if (!bad.empty()) bad += " against rank 0 (" + ranks.hosts[0] + ")";
   return bad;
+}
+
+// a warning for each host that runs more simulation threads than it has cores
+std::string crowded_hosts(const Ranks& ranks, int threads) {
+  std::map<std::string, std::pair<int, int>> hosts;  // host: ranks, cores
+  for (std::size_t r = 0; r < ranks.hosts.size(); ++r) {
+    auto& [count, cores] = hosts[ranks.hosts[r]];
+    ++count;
+    cores = ranks.cores[r];
+  }
+  std::string out;
+  for (const auto& [host, rc] : hosts) {
+    const auto [count, cores] = rc;
+    if (count * threads <= cores) continue;
+    out += "warning: " + host + " runs " + std::to_string(count) + " MPI ranks x " + std::to_string(threads) +
+           (threads == 1 ? " thread on " : " threads on ") + std::to_string(cores) +
+           " cores: they take turns (results are the same); give --threads so that ranks per node x "
+           "threads <= cores\n";
+  }
+  return out;
 }
 
 void stop_workers(int size) {
@@ -81,7 +119,7 @@ bool launched_by_mpi() {
   for (const char* v : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"}) {
     if (std::getenv(v)) return true;
   }
-  return slurm_tasks() > 1;
+  return false;
 }
 
 int run_job(int& argc, char**& argv, const RankZeroMain& main, std::ostream& err, TaskRunner runner) {
@@ -95,7 +133,7 @@ int run_job(int& argc, char**& argv, const RankZeroMain& main, std::ostream& err
     MPI_Finalize();
     return 1;
   }
-  // srun without an MPI plugin starts separate copies that each believe they are alone
+  // a launcher that started several tasks, each of which MPI sees alone
   if (size == 1 && slurm_tasks() > 1) {
     err << "error: srun started " << slurm_tasks()
         << " tasks but MPI sees one: each would run the whole job and write the same files; start "
@@ -106,16 +144,18 @@ int run_job(int& argc, char**& argv, const RankZeroMain& main, std::ostream& err
 
   int code = 0;
   try {
-    const std::string bad = disagreeing_ranks(rank, size);
+    const Ranks ranks = gather_ranks(rank, size);
     if (rank == 0) {
+      const std::string bad = disagreeing_ranks(ranks);
       if (!bad.empty()) {
         err << "error: MPI ranks " << bad
             << " compute other bits on a reference run: their CPUs or libraries differ, so results would "
                "depend on which rank ran what; run on nodes of one kind with one build of swarmpath\n";
         code = 1;
       } else {
-        code = main([size, runner](int threads) -> std::unique_ptr<evolve::BatchEvaluator> {
+        code = main([&](int threads) -> std::unique_ptr<evolve::BatchEvaluator> {
           if (size == 1) return std::make_unique<evolve::ThreadPool>(threads);
+          err << crowded_hosts(ranks, threads);
           return std::make_unique<MpiEvaluator>(size, threads, runner, threads);
         });
       }

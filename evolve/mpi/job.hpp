@@ -15,7 +15,7 @@
 namespace swarmpath::mpi {
 
 /// True when an MPI launcher started this process (Open MPI's mpirun, a PMI or PMIx launcher such
-/// as srun --mpi=pmix, MPICH's hydra), or srun started it as one of several tasks.
+/// as srun --mpi=pmix, MPICH's hydra).
 bool launched_by_mpi();
 
 /// The number of ranks in the job (once run_job has started MPI).

@@ -4,9 +4,21 @@
 # the files of an uninterrupted run (with or without MPI), and a scenario that cannot be read must
 # fail the job on rank 0 with the file named.
 #   mpi_test.sh CASE SWARMPATH SOURCE_DIR MPIEXEC SCRATCH
-# CASE: evolve | nsga2 | table | evaluate | resume | bad-scenario. MPIEXEC "" = built without MPI.
+# CASE: evolve | nsga2 | table | evaluate | resume | bad-scenario | srun-copies. MPIEXEC "" = built
+# without MPI (every case but srun-copies is then skipped).
 set -uo pipefail
 case_name=$1 B=$2 S=$3 MPIEXEC=$4 W=$5/$1
+
+# srun -n 4 without an MPI plugin: each copy refuses to run the whole command (with or without MPI)
+if [ "$case_name" = srun-copies ]; then
+  mkdir -p "$5"
+  SLURM_STEP_NUM_TASKS=4 SLURM_PROCID=2 "$B" table --seeds 1 >/dev/null 2>"$5/srun-copies.err"
+  rc=$?
+  cat "$5/srun-copies.err"
+  [ $rc -eq 2 ] && grep -q "srun started 4 tasks (this is task 2)" "$5/srun-copies.err" || { echo "FAIL: exit $rc"; exit 1; }
+  echo "PASS: srun-copies"
+  exit 0
+fi
 
 if [ -z "$MPIEXEC" ]; then
   echo "skipped: this build has no MPI backend (configure with -DSWARMPATH_MPI=ON and Open MPI installed:"
@@ -108,6 +120,10 @@ resume)
   same one killed $evolve_files
   mpi 3 "$B" evolve --config tiny.toml --out killed-then-mpi --threads 1 --no-wall-time --resume >/dev/null 2>resume-mpi.err || { cat resume-mpi.err; fail "resume under MPI"; }
   same one killed-then-mpi $evolve_files
+  # a checkpoint written by one process, continued under MPI
+  "$B" evolve --config tiny.toml --out plain --threads 2 --no-wall-time --generations 2 >/dev/null 2>plain.err || { cat plain.err; fail "two generations in one process"; }
+  mpi 3 "$B" evolve --config tiny.toml --out plain --threads 1 --no-wall-time --resume >/dev/null 2>plain-mpi.err || { cat plain-mpi.err; fail "resume under MPI"; }
+  same one plain $evolve_files
   # rank 0 itself killed (a scheduler's kill), then resumed under MPI
   SWARMPATH_MPI_FAULT=0:4 mpi 3 "$B" evolve --config tiny.toml --out rank0 --threads 1 --no-wall-time >/dev/null 2>rank0.err
   rc=$?
