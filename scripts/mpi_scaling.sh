@@ -93,9 +93,10 @@ else
   swarmpath=$(cd "$build_dir" && pwd)/swarmpath
   master=$(cd "$build_dir" && pwd)/bench/mpi_master
 fi
-# shared memory between ranks, no single-copy kernel support needed, no network probing, as root
+# shared memory between ranks (backed in /tmp: a container's /dev/shm can be tiny), no single-copy
+# kernel support needed, no network probing, as root
 mpi_args=(--oversubscribe --bind-to none --allow-run-as-root --mca pml ob1 --mca btl self,vader
-          --mca btl_vader_single_copy_mechanism none)
+          --mca btl_vader_single_copy_mechanism none --mca btl_vader_backing_directory /tmp)
 
 # a new bundle proves here that every process it starts loads nothing from this machine's /usr
 # (but /bin/sh, which each wrapper runs before it hands over to the bundled loader)
@@ -114,12 +115,14 @@ if [ "${check_bundle:-}" = yes ]; then
 fi
 
 mkdir -p "$out"
+: >"$out/summary.md"
+say() { echo "$@" | tee -a "$out/summary.md"; }
 cores=$(nproc)
 table=(table --scenarios configs/scenarios/paper --robots 60,100 --seeds "$seeds" --ticks "$ticks" --mode pf)
 tasks=$((8 * 2 * seeds))
-echo "mpi_scaling: $(uname -n), $cores cores; $tasks simulations per run (${table[*]})"
-echo "| ranks x threads | simulations/s | speed-up | efficiency | busy | same table --json |"
-echo "|---|---|---|---|---|---|"
+say "mpi_scaling: $(uname -n), $cores cores, $(date -u +%FT%TZ); $tasks simulations per run (${table[*]})"
+say "| ranks x threads | simulations/s | speed-up | efficiency | busy | same table --json |"
+say "|---|---|---|---|---|---|"
 base=""
 reference=""
 measure() {  # measure RANKS THREADS (RANKS 0: one process without mpirun)
@@ -138,7 +141,8 @@ measure() {  # measure RANKS THREADS (RANKS 0: one process without mpirun)
   [ -n "$reference" ] || reference=$out/run-$r-$t.json
   same=$(cmp -s "$reference" "$out/run-$r-$t.json" && echo yes || echo NO)
   awk -v n="$name" -v x="$rate" -v b="$base" -v k=$((r > 0 ? r * t : t)) -v busy="$busy" -v s="$same" \
-    'BEGIN { printf "| %s | %.2f | %.2f | %.0f %% | %s | %s |\n", n, x, x / b, 100 * x / b / k, busy, s }'
+    'BEGIN { printf "| %s | %.2f | %.2f | %.0f %% | %s | %s |\n", n, x, x / b, 100 * x / b / k, busy, s }' |
+    tee -a "$out/summary.md"
 }
 for r in $ranks; do measure "$r" 1; done
 if [ "$cores" -ge 16 ]; then
@@ -148,5 +152,5 @@ fi
 # the master alone: null tasks to every other rank
 top=$(echo "$ranks" | tr ' ' '\n' | sort -n | tail -1)
 [ "$top" -ge 2 ] || top=2
-"${mpirun[@]}" "${mpi_args[@]}" -np "$top" "$master" 20000 5 1 | tee "$out/master.txt"
-echo "mpi_scaling: logs and JSON in $out/"
+"${mpirun[@]}" "${mpi_args[@]}" -np "$top" "$master" 20000 5 1 | tee -a "$out/summary.md"
+echo "mpi_scaling: the table in $out/summary.md, each run's log and JSON beside it"
