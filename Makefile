@@ -1,6 +1,6 @@
 # swarmpath: thin wrapper over the CMake presets (see README.md).
 #   make run      build (release), evolve with configs/evolve/default.toml, evaluate the best against
-#                 genomes/paper.toml on fresh seeds, export it for ARGoS, write the run's report page
+#                 genomes/default.toml on fresh seeds, export it for ARGoS, write the run's report page
 #   make test     build and run every test in release and under ASan + UBSan, then check formatting
 #   make asan     only the ASan + UBSan build and tests
 #   make bench    build (release) and run the benchmarks (the viewer's drawing speed too)
@@ -25,7 +25,7 @@ build:
 run: build
 	@mkdir -p results
 	./build/release/swarmpath evolve --config configs/evolve/default.toml --threads $(JOBS) --force
-	./build/release/swarmpath evaluate --params results/evolve/default/best.toml --against genomes/paper.toml \
+	./build/release/swarmpath evaluate --params results/evolve/default/best.toml --against genomes/default.toml \
 	  --scenarios configs/scenarios/paper/env1.toml configs/scenarios/paper/env3.toml configs/scenarios/paper/env4.toml \
 	  --robots 60 --seeds 4 --seed-base 1000 --threads $(JOBS) --json results/evolve/default/evaluate.json
 	./build/release/swarmpath export --params results/evolve/default/best.toml --format argos \

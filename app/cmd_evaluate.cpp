@@ -15,6 +15,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/atomic_write.hpp"
+#include "evolve/params_export.hpp"
 #include "evolve/path_collision.hpp"
 #include "experiment.hpp"
 #include "sim/astar.hpp"
@@ -216,7 +217,10 @@ int run_evaluate(const EvaluateOptions& o, const evolve::EvaluatorFactory& evalu
 
   out << "evaluate " << o.params << (two ? " against " + o.against : "") << ": mode " << o.mode << ", "
       << o.seeds << " seeds from " << o.seed_base
-      << " per scenario and robot count; means over successful runs\n\n";
+      << " per scenario and robot count; means over successful runs\n";
+  out << "controllers: " << o.params << " runs the " << evolve::controller_text(pa);
+  if (two) out << "; " << o.against << " the " << evolve::controller_text(pb);
+  out << "\n\n";
   if (!two) {
     out << "| scenario | robots | A* [TU] | runs | success | ticks to form | path/A* | robots used |\n"
            "|---|---|---|---|---|---|---|---|\n";
@@ -256,7 +260,9 @@ int run_evaluate(const EvaluateOptions& o, const evolve::EvaluatorFactory& evalu
   if (!o.json.empty()) {
     nlohmann::ordered_json j;
     j["params"] = o.params;
+    j["controller"] = evolve::controller_json(pa);
     j["against"] = two ? nlohmann::ordered_json(o.against) : nlohmann::ordered_json(nullptr);
+    j["against_controller"] = two ? evolve::controller_json(pb) : nlohmann::ordered_json(nullptr);
     j["mode"] = o.mode;
     j["seeds"] = o.seeds;
     j["seed_base"] = o.seed_base;
@@ -293,7 +299,7 @@ Runner add_evaluate(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
   auto o = std::make_shared<EvaluateOptions>();
   app.add_option("--params", o->params, "Params file to evaluate")->required();
   app.add_option("--against", o->against,
-                 "A second params file, run on the same seeds (e.g. genomes/paper.toml)");
+                 "A second params file, run on the same seeds (e.g. genomes/default.toml)");
   app.add_option("--scenarios", o->scenarios, "Scenario files or directories of *.toml")
       ->capture_default_str();
   app.add_option("--robots", o->robots, "Robot counts, e.g. 60,100 (default: each scenario's own)")

@@ -10,6 +10,7 @@
 #include "cli.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "evolve/params_export.hpp"
 #include "evolve/path_collision.hpp"
 #include "recording_file.hpp"
 #include "sim/astar.hpp"
@@ -155,6 +156,7 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
     j["scenario_file"] = s.file;
     j["env_class"] = std::string(sim::to_string(s.env_class));
     j["mode"] = std::string(sim::to_string(mode));
+    j["controller"] = evolve::controller_json(p);
     j["robots"] = m.robots;
     j["seed"] = o.seed;
     j["ticks"] = m.ticks;

@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/atomic_write.hpp"
+#include "evolve/params_export.hpp"
 #include "evolve/path_collision.hpp"
 #include "experiment.hpp"
 #include "recording_file.hpp"
@@ -127,6 +128,8 @@ int run_table(const TableOptions& o, const evolve::EvaluatorFactory& evaluators,
   if (!o.record_failures.empty()) record_failures(scenarios, runs, p, o, threads, err);
 
   std::ostringstream md;
+  md << "Controller: the " << evolve::controller_text(p) << (o.params.empty() ? "" : ", " + o.params)
+     << "; the paper's figures in parentheses.\n\n";
   nlohmann::ordered_json json;
   if (both) {
     const Comparison c = compare(
@@ -138,6 +141,10 @@ int run_table(const TableOptions& o, const evolve::EvaluatorFactory& evaluators,
     const TableReport report = summarise(scenarios, astar8, runs, modes[0]);
     write_markdown(md, report);
     if (!o.json.empty()) json = table_json(scenarios, astar8, runs, report);
+  }
+  if (!o.json.empty()) {
+    json["params"] = o.params;
+    json["controller"] = evolve::controller_json(p);
   }
   // every output that can be written is (a full disk loses one file, not the others)
   int code = kExitOk;

@@ -97,7 +97,7 @@ BENCHMARK(BM_PathFormationEnv4ToCompletion)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 
-// task allocation, 100 robots in env4 with genomes/paper.toml (the defaults), from deployment to
+// task allocation, 100 robots in env4 with genomes/default.toml (the defaults), from deployment to
 // path completion (seed 3): the crowd at the nest makes the range-and-bearing medium the load
 void BM_TaskAllocationEnv4ToCompletion(benchmark::State& state) {
   run_to_completion(state, sim::Params{}, env4(), sim::Mode::kTaskAllocation, 3);

@@ -73,7 +73,7 @@ double number_in(const TableReader& t, std::string_view key, double fallback, do
 Gene read_gene(const TableReader& tune, const std::string& key) {
   const sim::ParamInfo* info = sim::find_param(key);
   if (info == nullptr) {
-    tune.fail(key, "unknown parameter (the names are those of SPEC §7, as in genomes/paper.toml)");
+    tune.fail(key, "unknown parameter (the names are those of SPEC §7, as in genomes/default.toml)");
   }
   Gene g = default_gene(*info);
   const std::optional<TableReader> t = tune.table(key);

@@ -4,6 +4,7 @@
 #include <ostream>
 #include <string>
 
+#include "sim/additions.hpp"
 #include "xml_escape.hpp"
 
 namespace swarmpath::evolve {
@@ -29,6 +30,24 @@ nlohmann::ordered_json params_values_json(const sim::Params& p) {
   nlohmann::ordered_json j = nlohmann::ordered_json::object();
   for (const sim::ParamInfo& info : sim::param_table()) j[std::string(info.name)] = param_value_json(p, info);
   return j;
+}
+
+nlohmann::ordered_json controller_json(const sim::Params& p) {
+  nlohmann::ordered_json off = nlohmann::ordered_json::array();
+  for (const sim::Addition& a : sim::additions()) {
+    if (!sim::is_on(p, a)) off.push_back(std::string(a.name));
+  }
+  nlohmann::ordered_json j;
+  j["name"] = std::string(sim::controller_name(p));
+  j["additions_on"] = sim::additions_on(p);
+  j["additions"] = sim::additions().size();
+  j["additions_off"] = std::move(off);
+  return j;
+}
+
+std::string controller_text(const sim::Params& p) {
+  return std::string(sim::controller_name(p)) + " controller (" + std::to_string(sim::additions_on(p)) +
+         " of " + std::to_string(sim::additions().size()) + " additions beyond SPEC on)";
 }
 
 nlohmann::ordered_json params_export_json(const sim::Params& p) {

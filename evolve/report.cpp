@@ -141,6 +141,7 @@ nlohmann::ordered_json run_json_common(const EvolveConfig& c, const RunState& st
                    {"build_type", b.build_type}};
   j["config_hash"] = config_hash(c);
   j["config"] = config_json(c);
+  j["controller"] = controller_json(c.genome.base);  // the base params' controller (its tuned keys aside)
   // the seeds of every generation (the same for every candidate of it) and of the re-evaluation
   nlohmann::ordered_json seeds;
   seeds["master"] = c.seed;
@@ -239,7 +240,10 @@ nlohmann::ordered_json run_json(const EvolveConfig& c, const RunResult& r, int t
   if (r.base.arenas.runs > 0) j["base_validation_arenas"] = stats_json(r.base.arenas);
   j["best"] =
       r.finalists.empty() ? nlohmann::ordered_json(nullptr) : finalist_json(c, r.finalists[r.best], r.best);
-  if (!r.finalists.empty()) j["best"]["params"] = params_values_json(r.finalists[r.best].params);
+  if (!r.finalists.empty()) {
+    j["best"]["params"] = params_values_json(r.finalists[r.best].params);
+    j["best"]["controller"] = controller_json(r.finalists[r.best].params);
+  }
   return j;
 }
 

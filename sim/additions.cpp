@@ -128,4 +128,27 @@ Params paper_literal() {
   return p;
 }
 
+namespace {
+
+bool same(const Params& a, const Params& b) {
+  for (const ParamInfo& info : param_table()) {
+    if (get_value(a, info) != get_value(b, info)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::string_view controller_name(const Params& p) {
+  if (same(p, Params{})) return "default";
+  if (same(p, paper_literal())) return "paper-literal";
+  return "custom";
+}
+
+int additions_on(const Params& p) {
+  int n = 0;
+  for (const Addition& a : kAdditions) n += is_on(p, a) ? 1 : 0;
+  return n;
+}
+
 }  // namespace swarmpath::sim

@@ -57,4 +57,11 @@ const Setting* spec_default(std::string_view key);
 /// every addition off.
 Params paper_literal();
 
+/// Which controller `p` is: "default" (every key at the code's default, genomes/default.toml),
+/// "paper-literal" (paper_literal(), genomes/paper-literal.toml) or "custom".
+std::string_view controller_name(const Params& p);
+
+/// How many additions are on in `p`.
+int additions_on(const Params& p);
+
 }  // namespace swarmpath::sim

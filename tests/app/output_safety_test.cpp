@@ -67,7 +67,7 @@ Result cli_with_full_stdout(const std::vector<std::string>& args) {
 }
 
 std::string tiny_evolve_config(const fs::path& dir) {
-  const std::string text = "name = \"tiny\"\nparams = \"" + source("genomes/paper.toml") +
+  const std::string text = "name = \"tiny\"\nparams = \"" + source("genomes/default.toml") +
                            "\"\nmode = \"pf\"\nseed = 7\n\n[tune]\nw_away = {}\n\n[evaluation]\n"
                            "scenarios = [\"" +
                            short_chain() +
@@ -88,7 +88,7 @@ TEST(WriteErrors, EveryCommandFailsWhenItsStandardOutputCannotBeWritten) {
       {"astar", "--scenario", short_chain()},
       {"astar", "--scenario", short_chain(), "--json"},
       {"table", "--scenarios", short_chain(), "--robots", "4", "--seeds", "1", "--ticks", "5"},
-      {"evaluate", "--params", source("genomes/paper.toml"), "--scenarios", short_chain(), "--robots", "4",
+      {"evaluate", "--params", source("genomes/default.toml"), "--scenarios", short_chain(), "--robots", "4",
        "--seeds", "1", "--ticks", "5"},
       {"export", "--format", "json"},
       {"evolve", "--config", tiny_evolve_config(dir), "--out", (dir / "run").string(), "--threads", "2"},
@@ -111,7 +111,7 @@ TEST(WriteErrors, AFullDeviceAsAnOutputFileExitsOneNamingIt) {
        "/dev/full"},
       {"table", "--scenarios", short_chain(), "--robots", "4", "--seeds", "1", "--ticks", "5", "--md",
        "/dev/full"},
-      {"evaluate", "--params", source("genomes/paper.toml"), "--scenarios", short_chain(), "--robots", "4",
+      {"evaluate", "--params", source("genomes/default.toml"), "--scenarios", short_chain(), "--robots", "4",
        "--seeds", "1", "--ticks", "5", "--json", "/dev/full"},
       {"export", "--format", "argos", "--out", "/dev/full"},
   };

@@ -130,7 +130,7 @@ TEST(CliEvolve, EvaluateAgainstRunsBothOnTheSameSeeds) {
   const auto dir = scratch("eval");
   const std::string json = (dir / "eval.json").string();
   const Result r =
-      cli({"evaluate", "--params", source("genomes/paper.toml"), "--against", source("genomes/paper.toml"),
+      cli({"evaluate", "--params", source("genomes/default.toml"), "--against", source("genomes/default.toml"),
            "--scenarios", source("tests/data/short_chain.toml"), "--robots", "8", "--seeds", "3", "--ticks",
            "4000", "--threads", "2", "--json", json});
   ASSERT_EQ(r.code, 0) << r.err;
@@ -151,7 +151,7 @@ TEST(CliEvolve, EvaluateAgainstRunsBothOnTheSameSeeds) {
   EXPECT_EQ(j.at("overall").at("params"), j.at("overall").at("against"));
   // seeds are seed-base ... seed-base + seeds - 1
   EXPECT_EQ(j.at("runs")[2].at("seed").get<int>(), 3);
-  EXPECT_EQ(cli({"evaluate", "--params", source("genomes/paper.toml"), "--mode", "diffusion"}).code, 2);
+  EXPECT_EQ(cli({"evaluate", "--params", source("genomes/default.toml"), "--mode", "diffusion"}).code, 2);
 }
 
 TEST(CliEvolve, ExportFormats) {

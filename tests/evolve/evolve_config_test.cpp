@@ -135,7 +135,7 @@ TEST(EvolveConfig, PathsResolveAgainstTheConfigFolder) {
   const EvolveConfig c = load_evolve_config(source("configs/evolve/default.toml"));
   EXPECT_EQ(c.evaluation.scenarios[0].written, "../scenarios/paper/env1.toml");
   EXPECT_EQ(sim::load_scenario(c.evaluation.scenarios[0].path).name, "env1");
-  EXPECT_EQ(c.params_written, "../../genomes/paper.toml");
+  EXPECT_EQ(c.params_written, "../../genomes/default.toml");
 }
 
 TEST(EvolveConfig, HashIgnoresOnlyTheBudget) {

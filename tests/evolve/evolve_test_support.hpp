@@ -74,7 +74,7 @@ inline std::string tiny_config(const std::string& optimizer = "random", int gene
                                const std::string& extra_tune = "") {
   return "name = \"tiny\"\n"
          "params = \"" +
-         source("genomes/paper.toml") +
+         source("genomes/default.toml") +
          "\"\n"
          "mode = \"pf\"\n"
          "seed = 7\n"

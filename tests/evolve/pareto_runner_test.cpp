@@ -219,7 +219,7 @@ TEST(ParetoRunner, FilesHoldTheFront) {
   // pareto.svg: three projections of three objectives, the base params marked
   const std::string svg = read_text(dir / "pareto.svg");
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
-  EXPECT_NE(svg.find("paper.toml"), std::string::npos);
+  EXPECT_NE(svg.find("default.toml"), std::string::npos);
   EXPECT_NE(svg.find(">ticks to form</text>"), std::string::npos);
   EXPECT_NE(svg.find(">robots used / N</text>"), std::string::npos);
   EXPECT_NE(svg.find(">path / A*</text>"), std::string::npos);

@@ -148,9 +148,9 @@ TEST(RunFolder, NoRunFileMayReplaceAnInputOfTheRun) {
   const fs::path out = dir / "out";
   fs::create_directories(out);
   // the base params are the best.toml of an earlier run in the same folder
-  fs::copy_file(testing::source("genomes/paper.toml"), out / "best.toml");
+  fs::copy_file(testing::source("genomes/default.toml"), out / "best.toml");
   std::string text = testing::tiny_config("random", 1);
-  text = testing::replaced(text, testing::source("genomes/paper.toml"), (out / "best.toml").string());
+  text = testing::replaced(text, testing::source("genomes/default.toml"), (out / "best.toml").string());
   write_text(dir / "tiny.toml", text);
   const std::string before = read_text(out / "best.toml");
   const app::cli_support::CliResult r = cli(evolve_args(dir / "tiny.toml", out, {"--force"}));

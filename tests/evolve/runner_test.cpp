@@ -180,12 +180,12 @@ TEST(Runner, PenalisedCandidatesAreNeitherSimulatedNorReported) {
   // base theta_hard 75, theta_soft 70; tuned hard in [60, 75], soft in [70, 90]: hard 60 with
   // soft 90 can be repaired neither way (soft cannot go below 70, hard not above 75)
   const fs::path dir = scratch("cfg");
-  std::string base = read_text(testing::source("genomes/paper.toml"));
+  std::string base = read_text(testing::source("genomes/default.toml"));
   base.replace(base.find("theta_hard = 90"), 15, "theta_hard = 75");
   testing::write_text(dir / "base.toml", base);
   std::string text =
       testing::tiny_config("random", 1, "theta_hard = { hi = 75 }\ntheta_soft = { lo = 70 }\n");
-  const std::string paper = testing::source("genomes/paper.toml");
+  const std::string paper = testing::source("genomes/default.toml");
   text.replace(text.find(paper), paper.size(), (dir / "base.toml").string());
   const EvolveConfig c = parse_evolve_config(text, "pen.toml", "");
   ASSERT_EQ(c.genome.dim(), 5u);  // row order: theta_hard, theta_soft, T_explore0, w_away, p_turn

@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 namespace swarmpath::sim {
 namespace {
 
@@ -77,6 +79,21 @@ TEST(Additions, PaperLiteralSwitchesEveryOneOffAndKeepsSpecDefaults) {
   }
   EXPECT_FALSE(p.backoff_spot || p.form_one_at_a_time || p.chain_bypass);  // options off by default
   EXPECT_TRUE(check_params(p).empty()) << check_params(p);
+}
+
+// genomes/paper-literal.toml is SPEC's controller, every key written out
+TEST(Additions, PaperLiteralGenomeFileHoldsPaperLiteral) {
+  const Params file = load_params(test::source_path("genomes/paper-literal.toml"));
+  const Params literal = paper_literal();
+  for (const ParamInfo& info : param_table())
+    EXPECT_EQ(get_value(file, info), get_value(literal, info)) << info.name;
+  EXPECT_EQ(controller_name(file), "paper-literal");
+  EXPECT_EQ(controller_name(load_params(test::source_path("genomes/default.toml"))), "default");
+  Params custom;
+  custom.w_seek = 0;
+  EXPECT_EQ(controller_name(custom), "custom");
+  EXPECT_EQ(additions_on(custom), static_cast<int>(additions().size()) - 1);
+  EXPECT_EQ(additions_on(literal), 0);
 }
 
 TEST(Additions, SwitchingOneOnInPaperLiteralSwitchesOnWhatItNeeds) {

@@ -106,17 +106,17 @@ TEST(ParamsRejects, CrossConstraints) {
   expect_rejected("R_vis = 80\nR_keep = 85\n", 2, "R_keep", "must be <= R_vis");
 }
 
-TEST(Params, PaperGenomeFileHoldsTheDefaults) {
-  const Params p = load_params(test::source_path("genomes/paper.toml"));
+TEST(Params, DefaultGenomeFileHoldsTheCodesDefaults) {
+  const Params p = load_params(test::source_path("genomes/default.toml"));
   const Params defaults;
   for (const ParamInfo& info : param_table())
     EXPECT_EQ(get_value(p, info), get_value(defaults, info)) << info.name;
 }
 
-// the speed study (docs/CHOICES.md, "Robot speed"): genomes/paper-v10.toml is the paper genome at
+// the speed study (docs/CHOICES.md, "Robot speed"): genomes/paper-v10.toml is the default genome at
 // SPEC's assumed 10 cm/s, with the trail back-off that was measured at that speed
-TEST(Params, TenCmPerSecondGenomeDiffersFromThePaperGenomeOnlyInSpeedAndBackOff) {
-  const Params paper = load_params(test::source_path("genomes/paper.toml"));
+TEST(Params, TenCmPerSecondGenomeDiffersFromTheDefaultOnlyInSpeedAndBackOff) {
+  const Params paper = load_params(test::source_path("genomes/default.toml"));
   const Params slow = load_params(test::source_path("genomes/paper-v10.toml"));
   EXPECT_EQ(paper.v_max, 20.0);
   EXPECT_EQ(slow.v_max, 10.0);
@@ -129,11 +129,11 @@ TEST(Params, TenCmPerSecondGenomeDiffersFromThePaperGenomeOnlyInSpeedAndBackOff)
   }
 }
 
-// stop 33 (docs/CHOICES.md): genomes/paper-single.toml (genomes/paper.toml until stop 32) is the paper
-// genome with the paper's single allocation: delta 25 / 35 / 35, the slower recruiting of stops 25-28,
-// and no second allocation of a chain's end that ran out
-TEST(Params, SingleAllocationGenomeDiffersFromThePaperGenomeOnlyInTheAllocationAndRecruiting) {
-  const Params paper = load_params(test::source_path("genomes/paper.toml"));
+// docs/CHOICES.md, "The allocation": genomes/paper-single.toml is the default genome with the paper's
+// single allocation: delta 25 / 35 / 35, slower recruiting (T_starve 600, T_recruit 300), and no second
+// allocation of a chain's end that ran out
+TEST(Params, SingleAllocationGenomeDiffersFromTheDefaultOnlyInTheAllocationAndRecruiting) {
+  const Params paper = load_params(test::source_path("genomes/default.toml"));
   const Params single = load_params(test::source_path("genomes/paper-single.toml"));
   EXPECT_EQ(paper.delta_open + paper.delta_obstacle + paper.delta_complex, 0.0);
   EXPECT_EQ(single.delta_open, 25.0);
@@ -153,10 +153,10 @@ TEST(Params, SingleAllocationGenomeDiffersFromThePaperGenomeOnlyInTheAllocationA
 }
 
 // the allocation study (docs/CHOICES.md, "Allocating by the founder's trip"): genomes/paper-frugal.toml
-// is the single-allocation genome with t from the founder's trip and delta calibrated for it, and,
-// since stop 29, resting robots recruited as quickly as in genomes/paper.toml
+// is the single-allocation genome with t from the founder's trip and delta calibrated for it, and
+// resting robots recruited as quickly as in genomes/default.toml
 TEST(Params, FrugalGenomeDiffersFromTheSingleAllocationGenomeOnlyInTheAllocationAndRecruiting) {
-  const Params paper = load_params(test::source_path("genomes/paper.toml"));
+  const Params paper = load_params(test::source_path("genomes/default.toml"));
   const Params single = load_params(test::source_path("genomes/paper-single.toml"));
   const Params frugal = load_params(test::source_path("genomes/paper-frugal.toml"));
   EXPECT_EQ(single.t_source, TSource::kBudget);

@@ -531,8 +531,8 @@ TEST(TaTable, EveryRowHasAGuardAndALabelledSpecRow) {
 
 TEST(TaAllocation, CountForAKnownTAndDelta) {  // SPEC §2.7 worked example
   // t = the founder's minimum exploring time, 1500 ticks = 150 s; s = 10 cm/s; v = R_vis = 100 cm
-  // with SPEC §2.7's delta defaults (5 / 15 / 20; genomes/paper.toml carries calibrated ones, 0 / 0 / 0) and
-  // the worked example's s = 10 cm/s (the default is 20, docs/CHOICES.md "Robot speed")
+  // with SPEC §2.7's delta defaults (5 / 15 / 20; genomes/default.toml carries calibrated ones, 0 / 0 / 0)
+  // and the worked example's s = 10 cm/s (the default is 20, docs/CHOICES.md "Robot speed")
   Params spec;
   spec.v_max = 10;
   spec.delta_open = 5;
@@ -612,7 +612,7 @@ Scenario env1_with(int robots) {
 
 TEST(TaRun, TheFounderAllocatesAndTheAllocatedRobotsFormThePath) {
   const Scenario s = env1_with(60);
-  const Params p = load_params(test::source_path("genomes/paper.toml"));
+  const Params p = load_params(test::source_path("genomes/default.toml"));
   const Metrics m = evaluate(p, s, Mode::kTaskAllocation, 1);
   ASSERT_GE(m.allocated, 2);
   EXPECT_LT(m.allocated, s.robots);  // some robots rest
@@ -680,11 +680,11 @@ TEST(TaRun, OneChainNoSideBranches) {
 // turned round among the robots at the chain's tip gained less than trap_progress (30 cm) in T_trap/4
 // (25 ticks) and fell back to its trail, which for a robot that reached the tip from the goal side
 // leads back past the target: its link stood beside its parent, not toward the nest. Env1, 100
-// robots, seed 1, genomes/paper.toml (then paper-refound.toml): 25 links in a knot 1 m wide round x = 3 m
+// robots, seed 1, genomes/default.toml (then paper-refound.toml): 25 links in a knot 1 m wide round x = 3 m
 // before stop 32; with the patient, straight back-off 15 for a 10 m path.
 TEST(TaRun, LinksStepTowardTheNestNotSideways) {
   const Scenario s = env1_with(100);
-  const Params p = load_params(test::source_path("genomes/paper.toml"));
+  const Params p = load_params(test::source_path("genomes/default.toml"));
   Metrics m;
   const int red = allocated_ever_in_chain(p, s, 1, m);
   ASSERT_TRUE(m.success);
