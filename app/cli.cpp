@@ -44,6 +44,15 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
   }
   {
     CLI::App* c = app.add_subcommand(
+        "ablate",
+        "The default controller with each addition beyond SPEC switched off in turn, and the paper-literal "
+        "one "
+        "with each switched on, on the same seeds: paired differences with 95 % intervals (markdown, JSON, "
+        "SVG).");
+    commands.push_back({c, add_ablate(*c, evaluators)});
+  }
+  {
+    CLI::App* c = app.add_subcommand(
         "evolve",
         "Tune controller parameters with an optimiser, or evolve a Pareto front with nsga2 (evolve config; "
         "checkpoints; --resume).");

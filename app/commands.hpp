@@ -20,6 +20,7 @@ Runner add_simulate(CLI::App& app);
 Runner add_astar(CLI::App& app);
 // the commands that run batches of simulations run them on what `evaluators` makes
 Runner add_table(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
+Runner add_ablate(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
 Runner add_evolve(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
 Runner add_evaluate(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
 Runner add_export(CLI::App& app);

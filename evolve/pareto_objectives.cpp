@@ -68,10 +68,8 @@ double t_quantile_975(int df) {
          (79.0 * z9 + 776.0 * z7 + 1482.0 * z5 - 1920.0 * z3 - 945.0 * z) / (92160.0 * v * v * v * v);
 }
 
-namespace {
-
 // mean and t interval of the values, summed in index order
-Interval interval_of(const std::vector<double>& x) {
+Interval mean_interval(const std::vector<double>& x) {
   Interval r;
   r.n = static_cast<int>(x.size());
   if (x.empty()) {
@@ -93,8 +91,6 @@ Interval interval_of(const std::vector<double>& x) {
   r.half_width = t_quantile_975(r.n - 1) * sd / std::sqrt(n);
   return r;
 }
-
-}  // namespace
 
 namespace {
 
@@ -122,7 +118,7 @@ std::vector<Interval> objective_intervals(std::span<const RunScore> runs,
     for (const RunScore& r : runs) {
       if (const std::optional<double> v = run_value(r, k)) x.push_back(*v);
     }
-    Interval i = interval_of(x);
+    Interval i = mean_interval(x);
     if (k == ObjectiveKind::kPathRatio && x.empty()) i.mean = fail_path_ratio;  // as objective_values
     out.push_back(i);
   }
@@ -142,7 +138,7 @@ std::vector<Interval> paired_differences(std::span<const RunScore> a, std::span<
       const std::optional<double> va = run_value(a[i], k), vb = run_value(b[i], k);
       if (va && vb) d.push_back(*va - *vb);
     }
-    out.push_back(interval_of(d));
+    out.push_back(mean_interval(d));
   }
   return out;
 }

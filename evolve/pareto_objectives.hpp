@@ -66,6 +66,9 @@ std::vector<Interval> objective_intervals(std::span<const RunScore> runs,
 std::vector<Interval> paired_differences(std::span<const RunScore> a, std::span<const RunScore> b,
                                          const std::vector<ObjectiveKind>& kinds);
 
+/// The mean of `x` and its 95 % interval (Student's t); half_width +inf below two values, mean NaN for none.
+Interval mean_interval(const std::vector<double>& x);
+
 /// The 0.975 quantile of Student's t distribution with `df` >= 1 degrees of freedom (exact
 /// table to 30, then the Cornish-Fisher expansion; within 1e-4).
 double t_quantile_975(int df);
