@@ -403,7 +403,7 @@ TEST(TaTable, T10NoAnswerToACallAlreadyAnsweredNorWithoutTheFlagNorWhenOff) {
 // T11/T12 [R refound_starved]: a chain's end left alone goes home and allocates the rest of the path
 Params refounding() {
   Params p;
-  p.refound_starved = true;  // the default since stop 33
+  p.refound_starved = true;  // the default
   return p;
 }
 
@@ -532,7 +532,8 @@ TEST(TaTable, EveryRowHasAGuardAndALabelledSpecRow) {
 TEST(TaAllocation, CountForAKnownTAndDelta) {  // SPEC §2.7 worked example
   // t = the founder's minimum exploring time, 1500 ticks = 150 s; s = 10 cm/s; v = R_vis = 100 cm
   // with SPEC §2.7's delta defaults (5 / 15 / 20; genomes/default.toml carries calibrated ones, 0 / 0 / 0)
-  // and the worked example's s = 10 cm/s (the default is 20, docs/CHOICES.md "Robot speed")
+  // and the worked example's s = 10 cm/s (the default is 20, docs/CHOICES.md "Speed and the allocation
+  // count")
   Params spec;
   spec.v_max = 10;
   spec.delta_open = 5;
@@ -651,8 +652,7 @@ int allocated_ever_in_chain(const Params& p, const Scenario& s, std::uint64_t se
 
 // R: single_child + ta_backoff_spot + depart_gap (docs/CHOICES.md). Allocated robots arriving
 // together attached to whichever subgoal they met first and built side branches: env1, 60 robots,
-// seed 2, 34 robots stood RED for a path of 15 (seed 1 at stop 15: 40 for 16; since trails never
-// cross a wall, seed 1's fan never closes its path). With one child per subgoal, each link placed
+// seed 2, 34 robots stood RED for a path of 15. With one child per subgoal, each link placed
 // toward the nest and the robots leaving one after another, every RED robot of seed 2 ends up in
 // the path (17 for 17).
 TEST(TaRun, OneChainNoSideBranches) {
@@ -676,12 +676,12 @@ TEST(TaRun, OneChainNoSideBranches) {
       << "side branches: " << red_fan << " RED for a path of " << f.path_robots;
 }
 
-// R spot_patience, spot_crumb_tol, trail_nestward (stop 32, docs/CHOICES.md). A forming robot that
+// R spot_patience, spot_crumb_tol, trail_nestward (docs/CHOICES.md). A forming robot that
 // turned round among the robots at the chain's tip gained less than trap_progress (30 cm) in T_trap/4
 // (25 ticks) and fell back to its trail, which for a robot that reached the tip from the goal side
 // leads back past the target: its link stood beside its parent, not toward the nest. Env1, 100
-// robots, seed 1, genomes/default.toml (then paper-refound.toml): 25 links in a knot 1 m wide round x = 3 m
-// before stop 32; with the patient, straight back-off 15 for a 10 m path.
+// robots, seed 1, genomes/default.toml: 25 links in a knot 1 m wide round x = 3 m without the three
+// keys; with the patient, straight back-off 15 for a 10 m path.
 TEST(TaRun, LinksStepTowardTheNestNotSideways) {
   const Scenario s = env1_with(100);
   const Params p = load_params(test::source_path("genomes/default.toml"));
@@ -701,85 +701,8 @@ TEST(TaRun, LinksStepTowardTheNestNotSideways) {
   EXPECT_LT(m.ticks_to_chain, b.ticks_to_chain);
 }
 
-// R rest_recruit (docs/CHOICES.md). With the frugal allocation (genomes/paper-frugal.toml) env1,
-// 60 robots, seed 1 allocates 19 robots; its chain bends and ends one link short, its nest-most RED
-// robot 1.2 m from the nest beacon beside the resting robots, and waits there to the end. A resting
-// robot that sees that free end joins it as the next link, and the path completes.
-TEST(TaRun, ARestingRobotCompletesAChainOneLinkShort) {
-  const Scenario s = env1_with(60);
-  Params off = load_params(test::source_path("genomes/paper-frugal.toml"));
-  off.rest_recruit = false;
-  off.recruit_call = false;  // the chain's end in view: T10 by the camera alone (stop 25's rule)
-  off.sighting_returns = false;
-  off.return_lured = false;  // stop 27's rules change the run; the case is stop 25's
-  off.nudge_parent = false;
-  off.t_recruit = 300;  // the frugal genome's recruiting before stop 29
-  off.t_starve = 600;
-  off.spot_patience = 0;  // stop 32's back-off lays a straighter chain that does not run out here
-  off.spot_crumb_tol = 0;
-  off.trail_nestward = false;
-  const Metrics short_one = evaluate(off, s, Mode::kTaskAllocation, 1);
-  ASSERT_FALSE(short_one.success) << "the case this test is for: a chain that runs out of robots";
-  Params on = off;
-  on.rest_recruit = true;
-  const Metrics m = evaluate(on, s, Mode::kTaskAllocation, 1);
-  EXPECT_TRUE(m.success) << "no path after " << m.ticks << " ticks";
-  EXPECT_EQ(short_one.recruited, 0);
-  EXPECT_GE(m.recruited, 1);
-  EXPECT_LE(m.recruited, 3);                                  // a link or two, not the resting crowd
-  EXPECT_EQ(m.allocated, short_one.allocated + m.recruited);  // the recruits count as allocated
-}
-
-// R recruit_call (docs/CHOICES.md). With the frugal allocation env1, 90 robots, seed 10 allocates
-// 19 robots and its chain stops about 3 m short of the deployment square: out of every resting
-// robot's 1 m view, so rest_recruit alone cannot close it. Its end calls on the medium (3 m), the
-// resting robots it reaches answer one at a time, and the path completes with a few more links.
-TEST(TaRun, AChainEndOutOfViewCallsTheRestingRobotsItNeeds) {
-  const Scenario s = env1_with(90);
-  Params off = load_params(test::source_path("genomes/paper-frugal.toml"));
-  off.rest_recruit = true;
-  off.recruit_call = false;
-  off.sighting_returns = false;
-  off.return_lured = false;  // stop 27's rules change the run; the case is stop 26's
-  off.nudge_parent = false;
-  off.spot_patience = 0;  // stop 32's back-off lays a straighter chain that does not run out here
-  off.spot_crumb_tol = 0;
-  off.trail_nestward = false;
-  const Metrics quiet = evaluate(off, s, Mode::kTaskAllocation, 10);
-  ASSERT_FALSE(quiet.success) << "the case this test is for: a chain that runs out of view";
-  EXPECT_EQ(quiet.recruited, 0);
-  Params on = off;
-  on.recruit_call = true;
-  const Metrics m = evaluate(on, s, Mode::kTaskAllocation, 10);
-  EXPECT_TRUE(m.success) << "no path after " << m.ticks << " ticks";
-  EXPECT_GE(m.recruited, 1);
-  EXPECT_LE(m.recruited, 5);  // the links it lacked, not the resting crowd
-  EXPECT_EQ(m.allocated, quiet.allocated + m.recruited);
-}
-
-// refound_starved [R]: with delta_open 0 the frugal genome allocates 9 robots in env2 (60 robots,
-// seed 1); the chain runs out 4.2 m from the resting robots, beyond the call's 3 m, and waits. With
-// refound_starved its end goes home, allocates the rest of the path from the resting robots and
-// leads them back (screen: stop 31, docs/CHOICES.md).
-TEST(TaRun, AChainEndOutOfCallRangeFetchesTheRobotsItNeeds) {
-  const Scenario s = with_max_ticks(
-      with_robots(load_scenario(test::source_path("configs/scenarios/paper/env2.toml")), 60), 15000);
-  Params off = load_params(test::source_path("genomes/paper-frugal.toml"));
-  off.delta_open = 0;
-  const Metrics quiet = evaluate(off, s, Mode::kTaskAllocation, 1);
-  ASSERT_FALSE(quiet.success) << "the case this test is for: a chain that runs out beyond the call";
-  EXPECT_EQ(quiet.recruited, 0);
-  Params on = off;
-  on.refound_starved = true;
-  on.t_refound = 1000;
-  const auto refounder = [](const RobotMemory& r) -> std::uint8_t { return r.ta.refounder ? 1 : 0; };
-  Metrics m;
-  const int refounders = robots_with(flags_ever(on, s, 1, refounder, m), 1);
-  EXPECT_TRUE(m.success) << "no path after " << m.ticks << " ticks";
-  EXPECT_GE(refounders, 1);
-  EXPECT_GT(m.allocated, quiet.allocated);
-  EXPECT_LE(m.allocated, 30);  // the rest of the path, not the resting crowd
-}
+// rest_recruit, recruit_call and refound_starved: tests/sim/recruiting_test.cpp, each in a corridor made
+// for it (tests/data/chain_end.toml)
 
 // SPEC §4.3: N_alloc counts every robot that initiated the task. env1, 70 robots, seed 3 has four
 // founders; the first to finish its protocol allocated 1 robot, the others the rest of the swarm,
@@ -832,11 +755,11 @@ TEST(TaRun, ALateFounderDefersToTheOneAlreadyAllocating) {
 
 TEST(Determinism, GoldenHashTaskAllocationShortChain) {
   // update only with a reason, stated in the commit that changes it
-  // stop 22: trap_progress 30 cm (was 5), 1224 -> 1853 ticks
-  // stop 24: trails that never join two sides of a wall, return_finds (the goal), 1853 -> 2080
-  // stop 24: skip_blocked_crumbs (a robot going home passes over a crumb it cannot reach), -> 1854
-  // stop 26: sighting_returns (an allocated robot with nothing free at its sighting goes home), -> 1683
-  // stop 32: spot_patience, spot_crumb_tol, trail_nestward (links toward the nest, not sideways), -> 1057
+  // 0fea745 trap_progress 30 cm (was 5), 1224 -> 1853 ticks
+  // 68e9317 trails that never join two sides of a wall, return_finds (the goal), 1853 -> 2080
+  // ab76562 skip_blocked_crumbs (a robot going home passes over a crumb it cannot reach), -> 1854
+  // d119867 sighting_returns (an allocated robot with nothing free at its sighting goes home), -> 1683
+  // 6743ca1 spot_patience, spot_crumb_tol, trail_nestward (links toward the nest, not sideways), -> 1057
   constexpr std::uint64_t kExpected = 0x2b67c87f753c9497ULL;  // complete: 1057 ticks, 20 allocated
   Params p;
   p.delta_open = 5;  // SPEC §2.7's default, so that some of the 20 robots rest
