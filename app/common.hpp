@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Small helpers shared by the subcommands.
+// What the subcommands share: params and scenario loading, number formatting, a stopwatch.
 #pragma once
 
 #include <chrono>

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// How the cost per robot-tick grows from 100 to 10,000 robots (issue 2's target: < 1.5x), measured
+// How the cost per robot-tick grows from 100 to 10,000 robots (the target: < 1.5x), measured
 // so that a shared machine's slow and fast minutes cancel: two diffusion worlds, 100 robots (env4)
 // and k x k tiles of env4 (100 robots a tile), both past their start-up transient, are stepped in
 // K triples of adjacent stretches: 100 robots, the tiles, 100 robots again. Each triple gives one

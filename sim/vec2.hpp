@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Plain 2-D vector and angle helpers used throughout the simulator (SI units unless named).
+// Plain 2-D vectors and angle functions used throughout the simulator (SI units unless named).
 #pragma once
 
 #include <cmath>

@@ -224,7 +224,7 @@ TEST(CliTable, OutputIsIdenticalAtOneAndTwoThreads) {
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 5);
 }
 
-TEST(CliTable, BothModesArePairedAndSummarised) {  // issue 4: table --mode both
+TEST(CliTable, BothModesArePairedAndSummarised) {  // the paper's whole table: table --mode both
   const auto dir = temp_file("y", "").parent_path();
   const auto out = dir / "both.json";
   const Result r = cli({"table", "--scenarios", short_chain(), "--robots", "16", "--seeds", "2", "--mode",

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Helpers shared by the evolve tests: source paths, scratch folders, a tiny evolve config (one
+// What the evolve tests share: source paths, scratch folders, a tiny evolve config (one
 // small arena, 8 robots, short runs) and fakes for the objective and the optimiser.
 #pragma once
 

@@ -47,13 +47,13 @@ TEST(Navigator, CreepingLessThanTrapProgressPerTTrapStillCountsAsTrapped) {
 
 TEST(Navigator, WithTheOldFiveCmThresholdACreepingQueueNeverFollowsTheEdge) {
   Params p;
-  p.trap_progress = 5;  // before stop 22
+  p.trap_progress = 5;  // the rule before trap_progress was a key (a fixed 5 cm)
   EXPECT_EQ(ticks_until_following(p, 0.25, 1000), -1);
   EXPECT_EQ(ticks_until_following(p, 0.0, 1000), static_cast<int>(p.t_trap) + 1);
 }
 
 // A following that makes no progress for dead_end_traps T_trap ticks turns back along the edge
-// (stop 33's screen of env7-8: docs/CHOICES.md "Where env8's allocated robots go"). Returns the tick
+// (a screen of env7-8 at commit ede714c: docs/CHOICES.md "Exploring"). Returns the tick
 // the side flips for a robot that follows a wall and loses `lose_cm` of progress a tick.
 int ticks_until_turning_back(const Params& p, double lose_cm) {
   NavMemory nav;
@@ -79,7 +79,7 @@ TEST(Navigator, AFollowingWithoutProgressTurnsBackAfterDeadEndTrapsTTrap) {
 }
 
 // A robot going home along its breadcrumbs, 25 cm from the next crumb, with a robot standing on that
-// crumb (chain robots stop where explorers walked): env8, TA, seed 2 at stop 24 had five allocated
+// crumb (chain robots stop where explorers walked): env8, TA, seed 2 (commit ab76562) had five allocated
 // robots circling such crumbs in RETURN_TO_NEST for 17 000-25 000 ticks, while the chain's tip
 // waited one link short of the nest. Returns the crumbs left after `ticks` ticks of not moving.
 int crumbs_left_when_blocked(const Params& p, int ticks) {
@@ -107,11 +107,11 @@ TEST(Navigator, ARobotGoingHomePassesOverACrumbItCannotReach) {
   EXPECT_EQ(crumbs_left_when_blocked(p, t_trap - 2), at_start);
   EXPECT_EQ(crumbs_left_when_blocked(p, t_trap + t_trap / 2), at_start - 1);
   Params off = p;
-  off.skip_blocked_crumbs = false;  // before stop 24: edge following, the crumb still ahead
+  off.skip_blocked_crumbs = false;  // edge following, the crumb still ahead
   EXPECT_EQ(crumbs_left_when_blocked(off, 5 * t_trap), at_start);
 }
 
-// stop 32 (spot_patience): a forming robot retraces its trail at once only when a wall, not a robot,
+// spot_patience: a forming robot retraces its trail at once only when a wall, not a robot,
 // stands between it and its spot. A reading that a robot's light within 30 cm explains is a robot.
 TEST(Navigator, AWallIsAReadingNoRobotsLightExplains) {
   Percept in = against_a_wall();  // the front sensor (7.5 deg) reads

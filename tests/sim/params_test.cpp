@@ -113,8 +113,8 @@ TEST(Params, DefaultGenomeFileHoldsTheCodesDefaults) {
     EXPECT_EQ(get_value(p, info), get_value(defaults, info)) << info.name;
 }
 
-// the speed study (docs/CHOICES.md, "Robot speed"): genomes/paper-v10.toml is the default genome at
-// SPEC's assumed 10 cm/s, with the trail back-off that was measured at that speed
+// the speed study (docs/CHOICES.md, "Speed and the allocation count"): genomes/paper-v10.toml is the default
+// genome at SPEC's assumed 10 cm/s, with the trail back-off that was measured at that speed
 TEST(Params, TenCmPerSecondGenomeDiffersFromTheDefaultOnlyInSpeedAndBackOff) {
   const Params paper = load_params(test::source_path("genomes/default.toml"));
   const Params slow = load_params(test::source_path("genomes/paper-v10.toml"));
@@ -129,9 +129,9 @@ TEST(Params, TenCmPerSecondGenomeDiffersFromTheDefaultOnlyInSpeedAndBackOff) {
   }
 }
 
-// docs/CHOICES.md, "The allocation": genomes/paper-single.toml is the default genome with the paper's
-// single allocation: delta 25 / 35 / 35, slower recruiting (T_starve 600, T_recruit 300), and no second
-// allocation of a chain's end that ran out
+// docs/CHOICES.md, "Speed and the allocation count": genomes/paper-single.toml is the default genome with the
+// paper's single allocation: delta 25 / 35 / 35, slower recruiting (T_starve 600, T_recruit 300), and no
+// second allocation of a chain's end that ran out
 TEST(Params, SingleAllocationGenomeDiffersFromTheDefaultOnlyInTheAllocationAndRecruiting) {
   const Params paper = load_params(test::source_path("genomes/default.toml"));
   const Params single = load_params(test::source_path("genomes/paper-single.toml"));
@@ -152,7 +152,7 @@ TEST(Params, SingleAllocationGenomeDiffersFromTheDefaultOnlyInTheAllocationAndRe
   }
 }
 
-// the allocation study (docs/CHOICES.md, "Allocating by the founder's trip"): genomes/paper-frugal.toml
+// the allocation study (docs/CHOICES.md, "Speed and the allocation count"): genomes/paper-frugal.toml
 // is the single-allocation genome with t from the founder's trip and delta calibrated for it, and
 // resting robots recruited as quickly as in genomes/default.toml
 TEST(Params, FrugalGenomeDiffersFromTheSingleAllocationGenomeOnlyInTheAllocationAndRecruiting) {

@@ -139,16 +139,16 @@ TEST(PfRun, ASubNestLooksForAParentThatMovedOutOfView) {
 
 // At 20 cm/s most of the 20 robots reach the goal within a few hundred ticks, many from its far
 // side; backing off along their own (far-side) way, they all turned RED round the goal and no chain
-// reached the nest (docs/CHOICES.md, "Back off to a spot from the far side").
+// reached the nest (docs/CHOICES.md, "Forming a subgoal").
 TEST(PfRun, RobotsThatFindTheGoalFromItsFarSideDoNotPileUpRoundIt) {
   const Scenario s = short_chain();
-  // both under the trap rule of the time this was measured (trap_progress 5, before stop 22; with
+  // both under the trap rule this was measured with (trap_progress 5, a fixed rule then; with
   // 30 cm seed 3 fails either way, its formation broken by recovery robots round the goal)
   Params far_spot;
   far_spot.trap_progress = 5;
   Params trail_only = far_spot;
   trail_only.backoff_far_spot = false;
-  trail_only.trail_slack = 3000;  // stopping anywhere on the way home, as before trail_slack (stop 21)
+  trail_only.trail_slack = 3000;  // stopping anywhere on the way home (3000 cm: no bound)
   int completed = 0;
   int completed_trail_only = 0;
   for (std::uint64_t seed = 1; seed <= 10; ++seed) {
@@ -172,10 +172,10 @@ TEST(PfRun, KeepRunningContinuesPastCompletion) {
 
 TEST(Determinism, GoldenHashPathFormationShortChain) {
   // update only with a reason, stated in the commit that changes it
-  // stop 21: trail_slack 45 cm (was: anywhere on the trail), 1275 -> 1303 ticks
-  // stop 22: trap_progress 30 cm (was 5), 1303 -> 2323 ticks
-  // stop 24: trails that never join two sides of a wall, return_finds (the goal): unchanged
-  // stop 24: skip_blocked_crumbs (a robot going home passes over a crumb it cannot reach),
+  // 8724376 trail_slack 45 cm (was: anywhere on the trail), 1275 -> 1303 ticks
+  // 0fea745 trap_progress 30 cm (was 5), 1303 -> 2323 ticks
+  // 68e9317 trails that never join two sides of a wall, return_finds (the goal): unchanged
+  // ab76562 skip_blocked_crumbs (a robot going home passes over a crumb it cannot reach),
   // 2323 -> 1666 ticks
   constexpr std::uint64_t kExpected = 0xf50357461512f2f3ULL;  // a complete run: 1666 ticks
   const Metrics m = evaluate(Params{}, short_chain(), Mode::kPathFormation, 1);

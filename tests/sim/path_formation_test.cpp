@@ -255,7 +255,7 @@ TEST(PfTable, Row5SubgoalAtDsubFromTheTarget) {
 
 // R: trail_slack. Row 5's "in between the starting point and the detected subgoal": a robot
 // retracing its own way home may stop up to trail_slack (45 cm) farther from the nest than its
-// target (round an obstacle's end), not anywhere on the way (stop 21: chains knotted by the goal)
+// target (round an obstacle's end), not anywhere on the way (where the chains knotted by the goal)
 TEST(PfTable, Row5OnTheTrailStopsAtMostTrailSlackFartherFromTheNest) {
   const Vec2 behind{-0.75, 0.0};  // the target 75 cm nearer the nest than the robot
   const Vec2 aside{0.75 * std::cos(deg2rad(120)), 0.75 * std::sin(deg2rad(120))};  // 33 cm nearer
@@ -272,7 +272,7 @@ TEST(PfTable, Row5OnTheTrailStopsAtMostTrailSlackFartherFromTheNest) {
   m = forming(aside);
   EXPECT_EQ(fire(m, sees(120), p, false), "");  // off the trail the target must be farther
   Params anywhere;
-  anywhere.trail_slack = 3000;  // the behaviour before stop 21
+  anywhere.trail_slack = 3000;  // no bound: anywhere on its way
   m = forming(behind);
   EXPECT_EQ(fire(m, sees(180), anywhere, true), "#5");
 }

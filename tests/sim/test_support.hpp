@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Helpers shared by the simulator tests: paths into the source tree and small inline scenarios.
+// What the simulator tests share: paths into the source tree and small inline scenarios.
 #pragma once
 
 #include <string>

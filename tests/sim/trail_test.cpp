@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The breadcrumb trail [R] must never join the two sides of a wall: a robot retracing it is told
 // to walk through the wall, presses against it and wanders (env8, the founder going home from the
-// goal, stop 23). The thinnest wall in the paper's arenas is 30 cm, so two robot centres on its
+// goal, commit 68e9317). The thinnest wall in the paper's arenas is 30 cm, so two robot centres on its
 // two faces are at least 47 cm apart.
 #include "sim/controllers/trail.hpp"
 
@@ -113,7 +113,7 @@ TEST(Trail, ARobotSentAcrossAWallFallsBackToACrumbItHasBeenAt) {
   EXPECT_GT(d.y, 1.9);
 }
 
-// stop 32 (spot_crumb_tol): the spot a forming robot backs off to is the crumb of its way out
+// spot_crumb_tol: the spot a forming robot backs off to is the crumb of its way out
 // d_sub + 5 cm from its target, among those nearer the nest than the target; trail_nestward: the way
 // home from the tip starts at the nearest such crumb, not at one on the leg back from the goal.
 // Nest at (0, 0); the robot walked east to (4, 0.5), past the tip at (3, 0), on to (4, -0.5)
