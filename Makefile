@@ -8,7 +8,7 @@
 #   make verify-genomes  (not in CI: minutes) re-run every shipped tuned genome (genomes/tuned.toml)
 #                 against the default on fresh seeds and arenas: does each still win?
 #   make benchmark       (not in CI: about half an hour on 2 cores) the generalisation benchmark of
-#                 genomes/paper.toml, into results/benchmark/
+#                 genomes/default.toml, into results/benchmark/
 
 JOBS ?= $(shell nproc)
 SOURCES := $(shell git ls-files --cached --others --exclude-standard 'sim/*.cpp' 'sim/*.hpp' 'evolve/*.cpp' 'evolve/*.hpp' 'app/*.cpp' 'app/*.hpp' \
@@ -55,7 +55,7 @@ verify-genomes: build
 
 benchmark: build
 	@mkdir -p results/benchmark
-	./build/release/swarmpath benchmark --config configs/benchmarks/generalisation.toml --params genomes/paper.toml \
+	./build/release/swarmpath benchmark --config configs/benchmarks/generalisation.toml --params genomes/default.toml \
 	  --threads $(JOBS) --json results/benchmark/paper.json --md results/benchmark/paper.md --svg results/benchmark/paper.svg
 
 format:

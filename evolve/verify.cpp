@@ -19,24 +19,6 @@ std::string num(double v, int digits) {
   return o.str();
 }
 
-Interval mean_interval(const std::vector<double>& v) {
-  Interval i;
-  i.n = static_cast<int>(v.size());
-  if (v.empty()) return i;
-  double s = 0.0;
-  for (const double x : v) s += x;
-  i.mean = s / static_cast<double>(v.size());
-  if (v.size() < 2) {
-    i.half_width = HUGE_VAL;
-    return i;
-  }
-  double q = 0.0;
-  for (const double x : v) q += (x - i.mean) * (x - i.mean);
-  const double sd = std::sqrt(q / static_cast<double>(v.size() - 1));
-  i.half_width = t_quantile_975(i.n - 1) * sd / std::sqrt(static_cast<double>(v.size()));
-  return i;
-}
-
 }  // namespace
 
 std::vector<EvalCase> verification_cases(const std::vector<EvalSetting>& settings, int seeds, int arenas,

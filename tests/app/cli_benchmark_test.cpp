@@ -142,7 +142,7 @@ TEST(Benchmark, TheCommandReportsPerFamilyAndOverallTheSameAtAnyThreadCount) {
   tiny.insert(tiny.find("\n[[family]]"),
               std::string("paper = \"") + SWARMPATH_SOURCE_DIR + "/tests/data\"\n");
   std::ofstream(dir / "tiny.toml") << tiny;
-  const std::string genome = std::string(SWARMPATH_SOURCE_DIR) + "/genomes/paper.toml";
+  const std::string genome = std::string(SWARMPATH_SOURCE_DIR) + "/genomes/default.toml";
   const auto run = [&](const std::string& threads, const std::string& tag) {
     return cli({"benchmark", "--config", (dir / "tiny.toml").string(), "--params", genome, "--against",
                 genome, "--threads", threads, "--json", (dir / (tag + ".json")).string(), "--svg",

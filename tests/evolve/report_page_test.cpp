@@ -112,7 +112,7 @@ TEST(ReportPage, ACmaesRunWithoutAndWithEvaluateJsonAndReplays) {
 
   // with evaluate.json: the table with intervals
   const auto e =
-      cli({"evaluate", "--params", run + "/best.toml", "--against", testing::source("genomes/paper.toml"),
+      cli({"evaluate", "--params", run + "/best.toml", "--against", testing::source("genomes/default.toml"),
            "--scenarios", testing::source("tests/data/short_chain.toml"), "--robots", "20", "--seeds", "3",
            "--ticks", "8000", "--json", run + "/evaluate.json"});
   ASSERT_EQ(e.code, 0) << e.err;

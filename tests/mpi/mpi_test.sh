@@ -43,7 +43,7 @@ same() {  # same DIR_A DIR_B FILE...
 # a tiny evolve config: short_chain at 8 robots, 3000 ticks, 2 seeds, population 4
 cat >tiny.toml <<TOML
 name = "tiny"
-params = "$S/genomes/paper.toml"
+params = "$S/genomes/default.toml"
 mode = "pf"
 seed = 7
 [tune]
@@ -98,7 +98,7 @@ table)
   echo "  same: table --json, --csv, --md"
   ;;
 evaluate)
-  args=(--params "$S/genomes/paper.toml" --against "$S/genomes/paper-single.toml" --scenarios "$S/configs/scenarios/paper/env3.toml"
+  args=(--params "$S/genomes/default.toml" --against "$S/genomes/paper-single.toml" --scenarios "$S/configs/scenarios/paper/env3.toml"
         --robots 20 --seeds 3 --ticks 2500 --mode ta)
   "$B" evaluate "${args[@]}" --threads 2 --json one.json >one.md 2>one.err || { cat one.err; fail "one process"; }
   mpi 3 "$B" evaluate "${args[@]}" --threads 1 --json mpi.json >mpi.md 2>mpi.err || { cat mpi.err; fail "mpirun -np 3"; }

@@ -44,7 +44,7 @@ seeds = 1
 `);
 const dir = join(out, 'tiny');
 swarmpath(o.swarmpath, ['evolve', '--config', config, '--out', dir, '--threads', '2']);
-swarmpath(o.swarmpath, ['evaluate', '--params', join(dir, 'best.toml'), '--against', join(o.source, 'genomes/paper.toml'),
+swarmpath(o.swarmpath, ['evaluate', '--params', join(dir, 'best.toml'), '--against', join(o.source, 'genomes/default.toml'),
   '--scenarios', scenario, '--robots', '20', '--seeds', '3', '--seed-base', '1000', '--ticks', '6000', '--threads', '2',
   '--json', join(dir, 'evaluate.json')]);
 const page = join(out, 'report.html');

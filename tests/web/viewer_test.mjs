@@ -22,7 +22,7 @@ mkdirSync(out, { recursive: true });
 const recording = join(out, 'env4-ta.swrec');
 const page = join(out, 'env4-ta.html');
 swarmpath(o.swarmpath, ['simulate', '--scenario', join(o.source, 'configs/scenarios/paper/env4.toml'), '--robots', '60',
-  '--mode', 'ta', '--params', join(o.source, 'genomes/paper.toml'), '--seed', '3', '--record', recording]);
+  '--mode', 'ta', '--params', join(o.source, 'genomes/default.toml'), '--seed', '3', '--record', recording]);
 swarmpath(o.swarmpath, ['view', recording, '--out', page]);
 
 const t = new Checks('viewer_test');
