@@ -252,7 +252,8 @@ Runner add_benchmark(CLI::App& app, const evolve::EvaluatorFactory& evaluators) 
   auto o = std::make_shared<BenchmarkOptions>();
   app.add_option("--config", o->config, "Benchmark file")->capture_default_str();
   app.add_option("--params", o->params, "Params file to measure (default: the code's defaults)");
-  app.add_option("--against", o->against, "A second params file, on the same runs (e.g. genomes/default.toml)");
+  app.add_option("--against", o->against,
+                 "A second params file, on the same runs (e.g. genomes/default.toml)");
   app.add_option("--mode", o->mode, "pf, ta or both (each run with and without task allocation)")
       ->capture_default_str();
   app.add_option("--families", o->families, "Only these families, e.g. wall-gap,rooms")->delimiter(',');

@@ -130,9 +130,9 @@ TEST(CliEvolve, EvaluateAgainstRunsBothOnTheSameSeeds) {
   const auto dir = scratch("eval");
   const std::string json = (dir / "eval.json").string();
   const Result r =
-      cli({"evaluate", "--params", source("genomes/default.toml"), "--against", source("genomes/default.toml"),
-           "--scenarios", source("tests/data/short_chain.toml"), "--robots", "8", "--seeds", "3", "--ticks",
-           "4000", "--threads", "2", "--json", json});
+      cli({"evaluate", "--params", source("genomes/default.toml"), "--against",
+           source("genomes/default.toml"), "--scenarios", source("tests/data/short_chain.toml"), "--robots",
+           "8", "--seeds", "3", "--ticks", "4000", "--threads", "2", "--json", json});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("paired"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("**overall**"), std::string::npos) << r.out;
