@@ -53,6 +53,12 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
   }
   {
     CLI::App* c = app.add_subcommand(
+        "robustness",
+        "Success, time and path against robots failing and packet loss, with and without task allocation.");
+    commands.push_back({c, add_robustness(*c, evaluators)});
+  }
+  {
+    CLI::App* c = app.add_subcommand(
         "evolve",
         "Tune controller parameters with an optimiser, or evolve a Pareto front with nsga2 (evolve config; "
         "checkpoints; --resume).");

@@ -12,6 +12,7 @@
 #include "common.hpp"
 #include "evolve/params_export.hpp"
 #include "evolve/path_collision.hpp"
+#include "fault_options.hpp"
 #include "recording_file.hpp"
 #include "sim/astar.hpp"
 #include "sim/config_error.hpp"
@@ -39,6 +40,7 @@ struct SimulateOptions {
   bool json = false;
   std::string record;
   std::int64_t record_every = 0;
+  FaultOptions faults;
 };
 
 // the paper's figure colours: subgoal path blue, optimisation 1 purple, optimisation 2 green, A* red
@@ -63,7 +65,7 @@ void add_path_lines(Picture& pic, const sim::Metrics& m, const sim::AStarResult*
 int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err) {
   evolve::check_output_paths({{"--scenario", o.scenario}, {"--params", o.params}},
                              {{"--svg", o.svg}, {"--heatmap", o.heatmap}, {"--record", o.record}});
-  sim::Scenario s = scenario_with_overrides(o.scenario, o.robots, o.ticks);
+  sim::Scenario s = with_fault_options(scenario_with_overrides(o.scenario, o.robots, o.ticks), o.faults);
   if (o.keep_running) s.sim.stop_when_complete = false;
   const sim::Params p = params_or_defaults(o.params);
   const sim::Mode mode = mode_from_option(o.mode);
@@ -171,6 +173,11 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
       j["resource_reduction_pct"] = nullptr;
       j["ticks_to_allocate"] = nullptr;
     }
+    if (s.faults.any()) {
+      j["faults"] = faults_json(s.faults);
+      j["failures"] = m.failures;
+      j["chain_failures"] = m.chain_failures;
+    }
     j["table_unit_cm"] = 10;
     j["wall_seconds"] = seconds;
     j["robot_ticks_per_second"] = robot_ticks_per_s;
@@ -207,6 +214,11 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
                   : std::string("none"))
           << "\n";
     }
+  }
+  if (s.faults.any()) {
+    out << "  faults        " << faults_text(s.faults) << "\n";
+    out << "  failures      " << m.failures << " robots failed, " << m.chain_failures
+        << " of them holding a chain link\n";
   }
   out << "  wall time     " << fixed(seconds, 3) << " s (" << fixed(robot_ticks_per_s / 1e6, 2)
       << " M robot-ticks/s)\n";
@@ -257,6 +269,7 @@ Runner add_simulate(CLI::App& app) {
       "state change, the milestones and paths; play it with 'swarmpath view'");
   app.add_option("--record-every", o->record_every,
                  "Ticks between recorded frames (default: one second of simulated time, 10 ticks)");
+  add_fault_options(app, o->faults);
   return [o](std::ostream& out, std::ostream& err) { return run_simulate(*o, out, err); };
 }
 

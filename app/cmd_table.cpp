@@ -6,7 +6,6 @@
 #include <ostream>
 
 #include <CLI/CLI.hpp>
-#include <omp.h>
 
 #include "cli.hpp"
 #include "commands.hpp"
@@ -15,6 +14,7 @@
 #include "evolve/params_export.hpp"
 #include "evolve/path_collision.hpp"
 #include "experiment.hpp"
+#include "fault_options.hpp"
 #include "recording_file.hpp"
 #include "sim/astar.hpp"
 #include "sim/config_error.hpp"
@@ -39,6 +39,7 @@ struct TableOptions {
   std::string markdown;
   std::string record_failures;
   std::int64_t record_every = 0;
+  FaultOptions faults;
 };
 
 // the failed runs of the grid again, recorded (the same runs: their state hashes are checked), one
@@ -79,46 +80,25 @@ int run_table(const TableOptions& o, const evolve::EvaluatorFactory& evaluators,
               std::ostream& err) {
   if (o.seeds < 1 || o.seeds > 100000) throw sim::ConfigError("--seeds", 0, "", "must lie in [1, 100000]");
   if (o.robots.empty()) throw sim::ConfigError("--robots", 0, "", "give at least one robot count");
-  const bool both = o.mode == "both";
-  const std::vector<sim::Mode> modes =
-      both ? std::vector<sim::Mode>{sim::Mode::kPathFormation, sim::Mode::kTaskAllocation}
-           : std::vector<sim::Mode>{mode_from_option(o.mode)};
-  if (!both && modes[0] == sim::Mode::kDiffusion)
-    throw sim::ConfigError("--mode", 0, "", "the table needs pf, ta or both (diffusion forms no path)");
+  const std::vector<sim::Mode> modes = path_modes(o.mode);
+  const bool both = modes.size() == 2;
   const std::vector<std::string> files = scenario_files(o.scenarios);
   std::vector<evolve::NamedPath> inputs = {{"--params", o.params}};
   for (const std::string& f : files) inputs.push_back({"--scenarios", f});
   evolve::check_output_paths(inputs, {{"--json", o.json}, {"--csv", o.csv}, {"--md", o.markdown}});
   const sim::Params p = params_or_defaults(o.params);
   std::vector<sim::Scenario> scenarios;
-  for (const std::string& f : files) scenarios.push_back(scenario_with_overrides(f, {}, o.ticks));
+  for (const std::string& f : files)
+    scenarios.push_back(with_fault_options(scenario_with_overrides(f, {}, o.ticks), o.faults));
   note_benchmark_arenas(scenarios, err);
-  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
-  if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
-
-  // the A* baseline of each scenario, once
-  std::vector<double> astar8(scenarios.size());
-  for (std::size_t s = 0; s < scenarios.size(); ++s) {
-    const sim::AStarResult a = sim::astar(scenarios[s]);
-    astar8[s] = a.found ? sim::to_tu(a.length_m) : std::numeric_limits<double>::quiet_NaN();
-  }
+  const int threads = thread_count(o.threads);
+  const std::vector<double> astar8 = astar8_lengths(scenarios);  // the A* baseline of each scenario, once
 
   const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
   const std::vector<GridCase> grid = make_grid(scenarios.size(), o.robots, modes, o.seeds, o.seed_base);
   const bool tty = stderr_is_terminal();
   const Stopwatch clock;
-  std::size_t last_line = 0;
-  const GridProgress progress = [&](std::size_t done, std::size_t total) {
-    const double t = clock.seconds();
-    const double eta = done > 0 ? t * static_cast<double>(total - done) / static_cast<double>(done) : 0.0;
-    if (tty) {
-      err << "\r  " << done << " / " << total << " runs, " << fixed(t, 0) << " s, ETA " << fixed(eta, 0)
-          << " s   " << std::flush;
-    } else if (done == total || done >= last_line + std::max<std::size_t>(1, total / 10)) {
-      last_line = done;
-      err << "  " << done << " / " << total << " runs, " << fixed(t, 0) << " s\n";
-    }
-  };
+  const GridProgress progress = grid_progress(err, tty);
   err << "swarmpath table: " << scenarios.size() << " scenarios x " << o.robots.size() << " robot counts x "
       << modes.size() << " modes x " << o.seeds << " seeds = " << grid.size() << " runs, mode " << o.mode
       << ", " << evaluator->describe() << "\n";
@@ -192,6 +172,7 @@ Runner add_table(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
       "with 'swarmpath view')");
   app.add_option("--record-every", o->record_every,
                  "Ticks between recorded frames (default: one second of simulated time, 10 ticks)");
+  add_fault_options(app, o->faults);
   return
       [o, evaluators](std::ostream& out, std::ostream& err) { return run_table(*o, evaluators, out, err); };
 }

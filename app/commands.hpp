@@ -23,6 +23,7 @@ Runner add_table(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
 Runner add_ablate(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
 Runner add_evolve(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
 Runner add_evaluate(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
+Runner add_robustness(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
 Runner add_export(CLI::App& app);
 Runner add_arena(CLI::App& app);
 Runner add_view(CLI::App& app);

@@ -3,10 +3,16 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <memory>
+#include <ostream>
 #include <utility>
 
+#include <omp.h>
+
+#include "common.hpp"
+#include "sim/astar.hpp"
 #include "sim/config_error.hpp"
 
 namespace swarmpath::app {
@@ -31,6 +37,44 @@ std::vector<GridRun> runs_of(const std::vector<GridRun>& runs, sim::Mode mode) {
     if (r.c.mode == mode) out.push_back(r);
   }
   return out;
+}
+
+std::vector<sim::Mode> path_modes(const std::string& mode) {
+  if (mode == "both") return {sim::Mode::kPathFormation, sim::Mode::kTaskAllocation};
+  const sim::Mode m = mode_from_option(mode);
+  if (m == sim::Mode::kDiffusion)
+    throw sim::ConfigError("--mode", 0, "", "needs pf, ta or both (diffusion forms no path)");
+  return {m};
+}
+
+int thread_count(int requested) {
+  if (requested > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
+  return requested > 0 ? requested : omp_get_max_threads();
+}
+
+std::vector<double> astar8_lengths(const std::vector<sim::Scenario>& scenarios) {
+  std::vector<double> out(scenarios.size());
+  for (std::size_t s = 0; s < scenarios.size(); ++s) {
+    const sim::AStarResult a = sim::astar(scenarios[s]);
+    out[s] = a.found ? sim::to_tu(a.length_m) : std::numeric_limits<double>::quiet_NaN();
+  }
+  return out;
+}
+
+GridProgress grid_progress(std::ostream& err, bool terminal) {
+  auto clock = std::make_shared<Stopwatch>();
+  auto last_line = std::make_shared<std::size_t>(0);
+  return [&err, terminal, clock, last_line](std::size_t done, std::size_t total) {
+    const double t = clock->seconds();
+    const double eta = done > 0 ? t * static_cast<double>(total - done) / static_cast<double>(done) : 0.0;
+    if (terminal) {
+      err << "\r  " << done << " / " << total << " runs, " << fixed(t, 0) << " s, ETA " << fixed(eta, 0)
+          << " s   " << std::flush;
+    } else if (done == total || done >= *last_line + std::max<std::size_t>(1, total / 10)) {
+      *last_line = done;
+      err << "  " << done << " / " << total << " runs, " << fixed(t, 0) << " s\n";
+    }
+  };
 }
 
 std::vector<std::vector<GridRun>> run_grid(const std::vector<sim::Scenario>& scenarios,

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <iosfwd>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,19 @@ std::vector<GridCase> make_grid(std::size_t scenarios, const std::vector<int>& r
 
 /// Called from the calling thread after each finished run (done, total); may print progress.
 using GridProgress = evolve::BatchProgress;
+
+/// The modes of --mode for the commands that measure paths: pf, ta, or both (pf, then ta); throws
+/// ConfigError for anything else (diffusion forms no path).
+std::vector<sim::Mode> path_modes(const std::string& mode);
+
+/// --threads: the number asked for, or all cores for 0; throws ConfigError beyond 1024.
+int thread_count(int requested);
+
+/// The A* (8-connected) baseline of each scenario in table units, NaN where there is no path.
+std::vector<double> astar8_lengths(const std::vector<sim::Scenario>& scenarios);
+
+/// Progress lines on `err`: one line rewritten in place on a terminal, else a line every tenth.
+GridProgress grid_progress(std::ostream& err, bool terminal);
 
 /// Runs the grid for each params set in one batch on `evaluator`: one list per params set, in
 /// grid order. Robot counts are checked (ConfigError) before anything runs.

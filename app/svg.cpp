@@ -183,6 +183,12 @@ void write_svg(std::ostream& out, const Picture& pic) {
       const Vec2 tip = p.p + sim::kRobotRadius * Vec2{p.c, p.s};
       out << "<line x1=\"" << f.x(p.p.x) << "\" y1=\"" << f.y(p.p.y) << "\" x2=\"" << f.x(tip.x) << "\" y2=\""
           << f.y(tip.y) << "\" stroke=\"black\"/>\n";
+      if (sim::has_failed(*pic.world, static_cast<int>(i))) {  // a failed robot: a red cross over it
+        const double d = 1.3 * r;
+        out << "<path d=\"M" << f.x(p.p.x) - d << "," << f.y(p.p.y) - d << "l" << 2 * d << "," << 2 * d << "M"
+            << f.x(p.p.x) - d << "," << f.y(p.p.y) + d << "l" << 2 * d << "," << -2 * d
+            << "\" stroke=\"#e00000\" stroke-width=\"2\"/>\n";
+      }
     }
     out << "</g>\n";
   }

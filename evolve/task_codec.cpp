@@ -9,15 +9,16 @@ namespace swarmpath::evolve {
 // A field added to one of these structs must travel too: add it below (writer and reader), then
 // the new size here. (Sizes of g++'s standard library on x86-64; other platforms skip the check.)
 #if defined(__GLIBCXX__) && defined(__x86_64__)
-static_assert(sizeof(sim::Scenario) == 352, "sim::Scenario changed: update write_scenario/read_scenario");
+static_assert(sizeof(sim::Scenario) == 432, "sim::Scenario changed: update write_scenario/read_scenario");
 static_assert(sizeof(sim::ArenaOrigin) == 72,
               "sim::ArenaOrigin changed: update write_scenario/read_scenario");
+static_assert(sizeof(sim::FaultModel) == 80, "sim::FaultModel changed: update write_scenario/read_scenario");
 static_assert(sizeof(sim::SimSettings) == 48,
               "sim::SimSettings changed: update write_scenario/read_scenario");
 static_assert(sizeof(sim::BoxObstacle) == 40 && sizeof(sim::CylinderObstacle) == 24 &&
                   sizeof(sim::RectRegion) == 32,
               "a scenario shape changed: update write_scenario/read_scenario");
-static_assert(sizeof(sim::Metrics) == 344, "sim::Metrics changed: update write_metrics/read_metrics");
+static_assert(sizeof(sim::Metrics) == 352, "sim::Metrics changed: update write_metrics/read_metrics");
 static_assert(sizeof(sim::PathSnapshot) == 64 && sizeof(sim::ChainStats) == 12,
               "a part of sim::Metrics changed: update write_metrics/read_metrics");
 #endif
@@ -138,6 +139,14 @@ void write_scenario(ByteWriter& w, const sim::Scenario& s) {
       w.f64(value);
     }
   }
+  const sim::FaultModel& f = s.faults;
+  w.f64(f.fail_fraction);
+  w.i64(f.fail_from);
+  w.i64(f.fail_until);
+  w.u8(static_cast<std::uint8_t>(f.fail_target));
+  for (const double v :
+       {f.camera_miss, f.camera_false, f.packet_loss, f.wheel_noise, f.position_noise, f.heading_noise})
+    w.f64(v);
 }
 
 sim::Scenario read_scenario(ByteReader& r) {
@@ -184,6 +193,14 @@ sim::Scenario read_scenario(ByteReader& r) {
       value = r.f64();
     }
   }
+  sim::FaultModel& f = s.faults;
+  f.fail_fraction = r.f64();
+  f.fail_from = r.i64();
+  f.fail_until = r.i64();
+  f.fail_target = static_cast<sim::FailTarget>(r.u8());
+  for (double* v :
+       {&f.camera_miss, &f.camera_false, &f.packet_loss, &f.wheel_noise, &f.position_noise, &f.heading_noise})
+    *v = r.f64();
   return s;
 }
 
@@ -226,6 +243,8 @@ void write_metrics(ByteWriter& w, const sim::Metrics& m) {
   int32(w, m.chain.subgoals_laid);
   int32(w, m.chain.subgoals_laid_goalward);
   int32(w, m.chain.forming_from_goal_side);
+  int32(w, m.failures);
+  int32(w, m.chain_failures);
 }
 
 sim::Metrics read_metrics(ByteReader& r) {
@@ -254,6 +273,8 @@ sim::Metrics read_metrics(ByteReader& r) {
   m.chain.subgoals_laid = int32(r);
   m.chain.subgoals_laid_goalward = int32(r);
   m.chain.forming_from_goal_side = int32(r);
+  m.failures = int32(r);
+  m.chain_failures = int32(r);
   return m;
 }
 

@@ -34,7 +34,10 @@ struct Metrics {
   int allocated = -1;  ///< robots that entered INITIATE_TASK (all founders' allocations, founders included)
   int recruited = 0;   ///< of them, resting robots that joined a chain's end (rest_recruit, TA row T10)
   double resource_reduction_pct = std::numeric_limits<double>::quiet_NaN();  ///< (N - allocated)/N x 100
-  std::int64_t ticks_to_allocate = -1;               ///< T_alloc: DONE first broadcast
+  std::int64_t ticks_to_allocate = -1;  ///< T_alloc: DONE first broadcast
+  // faults (Scenario::faults)
+  int failures = 0;        ///< robots that fail-stopped during the run
+  int chain_failures = 0;  ///< of them, robots showing a chain link's light (RED ... BROWN) then
   PathSnapshot subgoal_path, opt1_path, final_path;  ///< for pictures
   ChainStats chain;                                  ///< how the chain's links were laid (diagnostics)
 };

@@ -16,6 +16,7 @@ std::vector<int> chain_to_goal(const World& w, int first) {
   int id = first;
   while (is_robot(w, id)) {
     if (static_cast<int>(chain.size()) >= w.robot_count()) return {};  // a loop
+    if (has_failed(w, id)) return {};  // its light is dark: no chain runs through it
     chain.push_back(id);
     id = w.memory[static_cast<std::size_t>(id)].pf.parent.id;
   }
@@ -28,6 +29,7 @@ std::vector<int> chain_to_nest(const World& w, int last) {
   int id = last;
   while (is_robot(w, id)) {
     if (static_cast<int>(chain.size()) >= w.robot_count()) return {};
+    if (has_failed(w, id)) return {};  // its light is dark: no chain runs through it
     chain.push_back(id);
     id = w.memory[static_cast<std::size_t>(id)].pf.child.id;
   }

@@ -21,11 +21,11 @@ struct PathSnapshot {
 };
 
 /// The robots from `first` (the nest-side subgoal) up its parent pointers to the goal, or an
-/// empty list when the pointers end anywhere else (or loop).
+/// empty list when the pointers end anywhere else, loop or pass a failed robot.
 std::vector<int> chain_to_goal(const World& w, int first);
 
 /// The robots from `last` (the goal-side subgoal) down its child pointers to the nest, returned
-/// nest side first, or empty when they do not reach the nest.
+/// nest side first, or empty when they do not reach the nest (or pass a failed robot).
 std::vector<int> chain_to_nest(const World& w, int last);
 
 /// The snapshot of a chain (robot ids nest side first) in the world as it stands.

@@ -170,6 +170,13 @@ Scenario with_max_ticks(const Scenario& s, std::int64_t ticks, const std::string
   return out;
 }
 
+Scenario with_faults(const Scenario& s, const FaultModel& f, const std::string& what) {
+  if (const std::string err = check_faults(f); !err.empty()) throw ConfigError(what, 0, "", err);
+  Scenario out = s;
+  out.faults = f;
+  return out;
+}
+
 namespace {
 
 Scenario parse(const TomlDoc& doc) {
@@ -283,6 +290,9 @@ Scenario parse(const TomlDoc& doc) {
     s.sim.physics_regions_y = static_cast<int>(regions.y);
     sim->finish();
   }
+
+  // faults and noise [R]
+  if (auto faults = root.table("faults")) s.faults = parse_faults(*faults);
 
   // deployment region
   const TableReader dep = root.required_table("deployment");

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "faults.hpp"
 #include "geometry.hpp"
 #include "vec2.hpp"
 
@@ -82,6 +83,7 @@ struct Scenario {
 
   SimSettings sim;
   std::optional<ArenaOrigin> origin;  ///< set for a generated arena
+  FaultModel faults;  ///< `[faults]`: failures and sensor noise, off by default [R]
 
   Aabb arena_bounds() const { return {-0.5 * arena_size, 0.5 * arena_size}; }
 };
@@ -121,5 +123,7 @@ std::string check_robot_count(const Scenario& s, std::int64_t n);
 /// (the command-line option) when the value is not acceptable.
 Scenario with_robots(const Scenario& s, std::int64_t n, const std::string& what = "--robots");
 Scenario with_max_ticks(const Scenario& s, std::int64_t ticks, const std::string& what = "--ticks");
+/// A copy of `s` with another fault model; throws ConfigError naming `what` when it is invalid.
+Scenario with_faults(const Scenario& s, const FaultModel& f, const std::string& what = "--faults");
 
 }  // namespace swarmpath::sim

@@ -67,6 +67,16 @@ std::string write_scenario_toml(const Scenario& s, std::string_view header) {
     << "\nstop_when_complete = " << boolean(m.stop_when_complete)
     << "\ngrid_cell = " << toml_number(m.grid_cell) << "\nphysics_regions = [" << m.physics_regions_x << ", "
     << m.physics_regions_y << "]\n";
+  if (s.faults.any()) {
+    const FaultModel& f = s.faults;
+    o << "\n[faults]\nfail_fraction = " << toml_number(f.fail_fraction) << "\nfail_window = [" << f.fail_from
+      << ", " << f.fail_until << "]\nfail_target = " << quoted(std::string(to_string(f.fail_target)))
+      << "\ncamera_miss = " << toml_number(f.camera_miss)
+      << "\ncamera_false = " << toml_number(f.camera_false)
+      << "\npacket_loss = " << toml_number(f.packet_loss) << "\nwheel_noise = " << toml_number(f.wheel_noise)
+      << "\nposition_noise = " << toml_number(f.position_noise)
+      << "\nheading_noise = " << toml_number(f.heading_noise) << "\n";
+  }
   if (s.origin) {
     o << "\n[generator]             # swarmpath arena generate draws this arena again from these\n";
     o << "family = " << quoted(s.origin->family) << "\nseed = " << s.origin->seed

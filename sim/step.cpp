@@ -28,16 +28,25 @@ SensorView sensor_view(const Scenario& s, const Params& p, const World& w) {
 namespace {
 
 // Robot i's readings: the Percept's fixed part, its blobs and RAB messages appended to the buffers
-// (its spans are set by the caller, once the buffers have stopped growing).
-void sense_robot(const SensorView& view, const Params& p, const World& w, std::size_t i, Percept& in,
+// (its spans are set by the caller, once the buffers have stopped growing); with noise on, as the
+// fault model distorts them, from robot i's own noise streams.
+void sense_robot(const SensorView& view, const Params& p, World& w, std::size_t i, Percept& in,
                  std::vector<Blob>& blobs, std::vector<RabMessage>& inbox) {
   const int id = static_cast<int>(i);
   in.tick = w.tick;
   in.id = id;
   in.pose = w.poses[i];
+  const std::size_t blobs_from = blobs.size();
+  const std::size_t inbox_from = inbox.size();
   if (w.needs.proximity) sense_proximity(view, id, in.proximity);
   if (w.needs.camera) sense_camera(view, id, blobs);
-  if (w.needs.rab && robot_listens(w.mode, p, w.memory[i])) sense_rab(view, id, inbox);
+  const bool listens = w.needs.rab && robot_listens(w.mode, p, w.memory[i]);
+  if (listens) sense_rab(view, id, inbox);
+  if (!w.faults.noisy) return;
+  RobotNoise& noise = w.faults.noise[i];
+  in.pose = pose_noise(w.faults.model, noise.pose, w.poses[i]);
+  if (w.needs.camera) camera_noise(w.faults.model, noise.camera, view.camera_range, blobs, blobs_from);
+  if (listens) rab_noise(w.faults.model, noise.rab, inbox, inbox_from);
 }
 
 }  // namespace
@@ -53,7 +62,7 @@ void sense_all(const Scenario& s, const Params& p, World& w) {
   for (std::size_t i = 0; i < n; ++i) {
     w.blob_begin[i] = w.blobs.size();
     w.rab_begin[i] = w.rab_inbox.size();
-    sense_robot(view, p, w, i, w.percepts[i], w.blobs, w.rab_inbox);
+    if (w.faults.failed[i] == 0) sense_robot(view, p, w, i, w.percepts[i], w.blobs, w.rab_inbox);
   }
   w.blob_begin[n] = w.blobs.size();
   w.rab_begin[n] = w.rab_inbox.size();
@@ -65,14 +74,16 @@ void sense_all(const Scenario& s, const Params& p, World& w) {
 }
 
 void control_all(const Params& p, World& w) {
-  for (std::size_t i = 0; i < w.poses.size(); ++i)
-    w.commands[i] = control(w.mode, w.percepts[i], p, w.memory[i]);
+  for (std::size_t i = 0; i < w.poses.size(); ++i) {
+    if (w.faults.failed[i] == 0) w.commands[i] = control(w.mode, w.percepts[i], p, w.memory[i]);
+  }
 }
 
 void sense_and_control_all(const Scenario& s, const Params& p, World& w) {
   const SensorView view = sensor_view(s, p, w);
   Percept in;
   for (std::size_t i = 0; i < w.poses.size(); ++i) {
+    if (w.faults.failed[i] != 0) continue;  // a failed robot's command stays stopped and dark
     w.blobs.clear();
     w.rab_inbox.clear();
     sense_robot(view, p, w, i, in, w.blobs, w.rab_inbox);
@@ -85,7 +96,10 @@ void sense_and_control_all(const Scenario& s, const Params& p, World& w) {
 void act_all(World& w) {
   for (std::size_t i = 0; i < w.poses.size(); ++i) {
     const Command& c = w.commands[i];
-    w.physics->set_wheels(static_cast<int>(i), c.left_cm_s / 100.0, c.right_cm_s / 100.0);
+    double left = c.left_cm_s / 100.0;
+    double right = c.right_cm_s / 100.0;
+    if (w.faults.noisy) wheel_noise(w.faults.model, w.faults.noise[i].wheels, left, right);
+    w.physics->set_wheels(static_cast<int>(i), left, right);
     w.leds[i] = c.led;
     w.tags[i] = c.tag;
     w.rab_sending[i] = c.rab_send ? 1 : 0;
@@ -104,7 +118,28 @@ void integrate(const Scenario& s, World& w, MetricsAccumulator& m) {
   ++w.tick;
 }
 
+void fail_due(World& w) {
+  FaultState& f = w.faults;
+  while (f.next < f.schedule.size() && f.schedule[f.next].tick <= w.tick) {
+    int victim = f.schedule[f.next].robot;
+    if (victim < 0) {
+      // FailTarget::kChain: one of the robots showing a chain link's light now; none: wait
+      int lit = 0;
+      for (std::size_t i = 0; i < w.leds.size(); ++i) lit += f.failed[i] == 0 && is_chain_light(w.leds[i]);
+      if (lit == 0) return;
+      auto k = static_cast<int>(f.victims.below(static_cast<std::uint64_t>(lit)));
+      for (std::size_t i = 0; i < w.leds.size() && victim < 0; ++i) {
+        if (f.failed[i] == 0 && is_chain_light(w.leds[i]) && k-- == 0) victim = static_cast<int>(i);
+      }
+    }
+    fail_robot(w, victim);
+    ++f.next;
+  }
+}
+
 void step(const Scenario& s, const Params& p, World& w, MetricsAccumulator& m) {
+  // robots whose failure is due stop (faults)
+  fail_due(w);
   // sense and control, robot by robot in id order: every robot reads the same pre-step snapshot
   sense_and_control_all(s, p, w);
   // act: wheels, LEDs and the RAB outbox (heard by the others next tick)
@@ -125,7 +160,9 @@ Metrics run(const Params& p, const Scenario& s, Mode mode, std::uint64_t seed, c
     if (observe && observe(w)) break;
     if (s.sim.stop_when_complete && m.complete()) break;
   }
-  const Metrics out = m.finish(w.tick, s.sim.dt(), state_hash(w));
+  Metrics out = m.finish(w.tick, s.sim.dt(), state_hash(w));
+  out.failures = w.faults.failures;
+  out.chain_failures = w.faults.chain_failures;
   if (final_world != nullptr) *final_world = std::move(w);
   return out;
 }

@@ -148,6 +148,7 @@ World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t se
   // poses as Box2D stores them (single precision), so that tick 0 senses what physics holds
   w.physics->read_poses(w.poses);
   for (std::size_t i = 0; i < n; ++i) w.positions[i] = w.poses[i].p;
+  w.faults = make_fault_state(s.faults, static_cast<int>(n), seed);
   w.grid.reset(grid_bounds(s), s.sim.grid_cell, n);
   w.grid.build(w.positions);
 
@@ -155,6 +156,19 @@ World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t se
   if (w.needs.camera) w.blobs.reserve(64);
   if (w.needs.rab) w.rab_inbox.reserve(64);
   return w;
+}
+
+void fail_robot(World& w, int id) {
+  const auto i = static_cast<std::size_t>(id);
+  if (w.faults.failed[i] != 0) return;
+  w.faults.failed[i] = 1;
+  ++w.faults.failures;
+  if (is_chain_light(w.leds[i])) ++w.faults.chain_failures;
+  w.commands[i] = Command{};  // wheels at zero (braked), LEDs off, nothing sent
+  w.leds[i] = Led::kBlack;
+  w.tags[i] = kNobody;
+  w.rab_sending[i] = 0;
+  w.physics->set_wheels(id, 0.0, 0.0);
 }
 
 std::uint64_t state_hash(const World& w) {

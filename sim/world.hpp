@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "controller.hpp"
+#include "faults.hpp"
 #include "params.hpp"
 #include "percept.hpp"
 #include "physics.hpp"
@@ -38,6 +39,7 @@ struct World {
   std::vector<RabPayload> rab_out;
   std::vector<RobotMemory> memory;
   std::vector<Command> commands;
+  FaultState faults;  ///< failures and noise streams (Scenario::faults)
 
   // per-tick sensor buffers, reused so that a tick allocates nothing after warm-up
   SensorNeeds needs;
@@ -62,6 +64,16 @@ World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t se
 
 /// The deployment positions and yaws alone (what make_world uses), for tests and pictures.
 std::vector<Pose> deploy(const Scenario& s, std::span<const Shape> shapes, std::uint64_t seed);
+
+/// Robot `id` fail-stops now: its wheels stop (braked, it stays where it is as an obstacle), its
+/// LEDs go dark, it no longer senses, decides or sends; its memory stays as it was.
+void fail_robot(World& w, int id);
+
+/// Whether robot `id` has failed.
+inline bool has_failed(const World& w, int id) {
+  const auto i = static_cast<std::size_t>(id);
+  return i < w.faults.failed.size() && w.faults.failed[i] != 0;
+}
 
 /// A hash of every robot's pose, controller state, turning mode and LED, and the tick:
 /// two runs with equal hashes went the same way.

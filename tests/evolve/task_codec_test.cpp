@@ -57,6 +57,12 @@ TEST(TaskCodec, AScenarioWithEveryKindOfObstacleSurvives) {
   s = sim::with_max_ticks(sim::with_robots(s, 30), 1500);
   s.sim.occlude_by_robots = true;  // off by default: a flag that must travel
   s.sim.physics_regions_x = 2;
+  s = sim::with_faults(s, {.fail_fraction = 0.1,
+                           .fail_from = 3,
+                           .fail_until = 700,
+                           .fail_target = sim::FailTarget::kChain,
+                           .packet_loss = 0.2,
+                           .heading_noise = 1});
   const sim::Scenario back = round_trip(s, write_scenario, read_scenario);
   EXPECT_EQ(scenario_bytes(back), scenario_bytes(s));
   EXPECT_EQ(back.name, s.name);
@@ -70,6 +76,9 @@ TEST(TaskCodec, AScenarioWithEveryKindOfObstacleSurvives) {
   EXPECT_EQ(back.sim.max_ticks, 1500);
   EXPECT_TRUE(back.sim.occlude_by_robots);
   EXPECT_EQ(back.sim.physics_regions_x, 2);
+  EXPECT_EQ(back.faults.fail_until, 700);
+  EXPECT_EQ(back.faults.fail_target, sim::FailTarget::kChain);
+  EXPECT_EQ(back.faults.packet_loss, 0.2);
   // what a remote rank simulates is what this one would
   const sim::Params p;
   EXPECT_EQ(sim::evaluate(p, back, sim::Mode::kTaskAllocation, 5).state_hash,
@@ -120,6 +129,12 @@ TEST(TaskCodec, MetricsSurviveBitForBitNaNsAndPathsIncluded) {
   EXPECT_EQ(back.final_path.robots, done.final_path.robots);
   EXPECT_EQ(back.final_path.points, done.final_path.points);
   EXPECT_EQ(back.chain.subgoals_laid, done.chain.subgoals_laid);
+  sim::Metrics faulty = done;  // the fault counts travel too
+  faulty.failures = 3;
+  faulty.chain_failures = 2;
+  const sim::Metrics fback = round_trip(faulty, write_metrics, read_metrics);
+  EXPECT_EQ(fback.failures, 3);
+  EXPECT_EQ(fback.chain_failures, 2);
 
   // a run that never formed its path: NaN lengths stay NaN, -1 ticks stay -1
   const sim::Metrics failed =

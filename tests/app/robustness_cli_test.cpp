@@ -1,0 +1,134 @@
+// SPDX-License-Identifier: MIT
+// The fault options of simulate and table, and `swarmpath robustness`: the sweep's tables, JSON
+// and SVG, and exit code 2 with the option's name for bad input.
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "tests/app/cli_support.hpp"
+
+namespace swarmpath::app {
+namespace {
+
+using cli_support::cli;
+
+std::string source(const std::string& relative) { return std::string(SWARMPATH_SOURCE_DIR) + "/" + relative; }
+
+std::filesystem::path temp_dir() {
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("swarmpath_robustness_test_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::string read(const std::filesystem::path& p) {
+  std::ifstream f(p);
+  std::stringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+TEST(FaultCli, SimulateReportsTheFaultsAndTheFailures) {
+  const auto r = cli({"simulate", "--scenario", source("tests/data/short_chain.toml"), "--mode", "pf",
+                      "--seed", "1", "--fail-fraction", "0.1", "--fail-window", "0,0", "--fail-target",
+                      "chain", "--camera-miss", "0.01", "--json"});
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["faults"]["fail_fraction"], 0.1);
+  EXPECT_EQ(j["faults"]["fail_target"], "chain");
+  EXPECT_EQ(j["faults"]["camera_miss"], 0.01);
+  EXPECT_EQ(j["failures"], 2);
+  EXPECT_EQ(j["chain_failures"], 2);
+  // without faults the JSON has no such keys
+  const auto plain = nlohmann::json::parse(
+      cli({"simulate", "--scenario", source("tests/data/short_chain.toml"), "--mode", "pf", "--json"}).out);
+  EXPECT_FALSE(plain.contains("faults"));
+}
+
+TEST(FaultCli, BadFaultOptionsExitWithTwoNamingTheOption) {
+  const std::string s = source("tests/data/short_chain.toml");
+  for (const auto& [option, value] :
+       std::vector<std::pair<std::string, std::string>>{{"--packet-loss", "1.5"},
+                                                        {"--fail-fraction", "-0.1"},
+                                                        {"--camera-miss", "2"},
+                                                        {"--fail-target", "everyone"},
+                                                        {"--wheel-noise", "3"},
+                                                        {"--fail-window", "10,5"}}) {
+    const auto r = cli({"simulate", "--scenario", s, "--mode", "pf", option, value});
+    EXPECT_EQ(r.code, 2) << option;
+    EXPECT_NE(r.err.find(option), std::string::npos) << r.err;
+  }
+  // ... and a bad [faults] table names its file, line and key
+  const auto bad = temp_dir() / "bad_faults.toml";
+  std::ofstream(bad) << read(s) << "\n[faults]\npacket_loss = 3\n";
+  const auto r = cli({"table", "--scenarios", bad.string(), "--robots", "20", "--seeds", "1"});
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("bad_faults.toml:20: faults.packet_loss"), std::string::npos) << r.err;
+  EXPECT_EQ(cli({"robustness", "--scenarios", s, "--fail-fractions", "0.1,0"}).code, 2);
+  EXPECT_EQ(cli({"robustness", "--scenarios", s, "--packet-loss", "0,1.5"}).code, 2);
+}
+
+TEST(FaultCli, RobustnessSweepsFailuresAndPacketLoss) {
+  const auto dir = temp_dir();
+  const auto r = cli({"robustness",
+                      "--scenarios",
+                      source("tests/data/short_chain.toml"),
+                      "--robots",
+                      "20",
+                      "--seeds",
+                      "2",
+                      "--fail-fractions",
+                      "0,0.2",
+                      "--fail-window",
+                      "0,600",
+                      "--packet-loss",
+                      "0,1",
+                      "--ticks",
+                      "3000",
+                      "--threads",
+                      "2",
+                      "--json",
+                      (dir / "r.json").string(),
+                      "--svg",
+                      (dir / "r.svg").string(),
+                      "--md",
+                      (dir / "r.md").string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("### Success (% of runs)"), std::string::npos);
+  EXPECT_NE(r.out.find("| pf | any (no radio) |"), std::string::npos);
+  EXPECT_NE(r.out.find("| ta | 100 % |"), std::string::npos);
+  EXPECT_EQ(r.out.find("10 % of the robots failing"), std::string::npos);  // no 10 % column: no target line
+  EXPECT_EQ(read(dir / "r.md"), r.out);
+  const auto j = nlohmann::json::parse(read(dir / "r.json"));
+  // path formation runs once per failure fraction (no radio), task allocation per packet loss too
+  EXPECT_EQ(j["runs"].size(), 2u * 2u + 2u * 2u * 2u);
+  ASSERT_EQ(j["cells"].size(), 2u + 4u);
+  int failed_robots = 0;
+  for (const auto& run : j["runs"]) {
+    if (run["fail_fraction"] == 0.0) {
+      EXPECT_EQ(run["failures"], 0);
+    }
+    if (run["fail_fraction"] == 0.2) failed_robots += run["failures"].get<int>();
+    // nothing heard: no robot allocated but the founders themselves, and no path
+    if (run["packet_loss"] == 1.0) {
+      EXPECT_FALSE(run["success"].get<bool>());
+    }
+  }
+  EXPECT_EQ(failed_robots, 6 * 4);  // 4 robots in each of the six runs, all within the first 600 ticks
+  for (const auto& c : j["cells"]) {
+    if (c["mode"] == "pf") {
+      EXPECT_EQ(c["packet_loss"], "any");
+    }
+  }
+  const std::string svg = read(dir / "r.svg");
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("with task allocation, packet loss 100 %"), std::string::npos);
+  EXPECT_NE(svg.find("robots failing (%)"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace swarmpath::app
