@@ -83,7 +83,7 @@ struct Scenario {
 
   SimSettings sim;
   std::optional<ArenaOrigin> origin;  ///< set for a generated arena
-  FaultModel faults;  ///< `[faults]`: failures and sensor noise, off by default [R]
+  FaultModel faults;                  ///< `[faults]`: failures and sensor noise, off by default [R]
 
   Aabb arena_bounds() const { return {-0.5 * arena_size, 0.5 * arena_size}; }
 };
