@@ -5,6 +5,7 @@
 
 #include "sim/motion.hpp"
 #include "sim/robot_model.hpp"
+#include "units.hpp"
 
 namespace swarmpath::sim {
 
@@ -106,7 +107,7 @@ Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trai
   if (!nav.on_trail) return nav_toward(in, p, nav, rng, field_point != nullptr ? *field_point : nest);
   // stuck on the way to the crumb nearest it (behind a wall?), away from the nest's crowd: back to
   // a crumb it has been at, and home along the trail from there (once per leg)
-  if (!nav.fell_back && trapped(nav, p, trap) && 100.0 * dist(in.pose.p, nest) > p.nest_crowd) {
+  if (!nav.fell_back && trapped(nav, p, trap) && kCmPerM * dist(in.pose.p, nest) > p.nest_crowd) {
     nav.fell_back = true;
     if (trail.fall_back()) {
       nav.stalled = 0;
@@ -125,13 +126,13 @@ Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trai
   // progress along the trail: minus what is left of it (then of the last leg to the nest)
   const double left = more ? trail.remaining(in.pose.p) : dist(in.pose.p, nest);
   const Vec2 field = field_toward(in.pose, crumb);
-  if (nav_update(nav, p, rng, -100.0 * left, in, field)) return follow_edge(in, nav.side);
+  if (nav_update(nav, p, rng, -kCmPerM * left, in, field)) return follow_edge(in, nav.side);
   return field;
 }
 
 Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Vec2 point, bool crowded) {
   const Vec2 field = field_toward(in.pose, point);
-  if (nav_update(nav, p, rng, -100.0 * dist(in.pose.p, point), in, field, crowded)) {
+  if (nav_update(nav, p, rng, -kCmPerM * dist(in.pose.p, point), in, field, crowded)) {
     return follow_edge(in, nav.side);
   }
   return field;

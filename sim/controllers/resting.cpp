@@ -4,6 +4,7 @@
 #include "navigation.hpp"
 #include "sim/controller.hpp"
 #include "sim/motion.hpp"
+#include "units.hpp"
 
 namespace swarmpath::sim {
 
@@ -11,7 +12,7 @@ Command drive_to(const Percept& in, const Params& p, RobotMemory& mem, Vec2 poin
                  Led led) {
   Command cmd;
   cmd.led = led;
-  if (100.0 * dist(in.pose.p, point) <= stop_within_cm) return cmd;
+  if (kCmPerM * dist(in.pose.p, point) <= stop_within_cm) return cmd;
   const Vec2 f = point == mem.nest ? nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest)
                                    : nav_toward(in, p, mem.nav, mem.rng, point);
   const Vec2 v = p.v_max * with_avoidance(in, p, mem.nav, f);
@@ -40,7 +41,7 @@ namespace {
 // than when it settled) backs away from it, then drive_to brings it back.
 void watch_for_pressing(const Percept& in, const Params& p, RobotMemory& mem) {
   TaMemory& m = mem.ta;
-  const bool home = 100.0 * dist(in.pose.p, mem.start) <= p.d_arrive;
+  const bool home = kCmPerM * dist(in.pose.p, mem.start) <= p.d_arrive;
   const Vec2 touch = proximity_vector(in.proximity);
   const double len = norm(touch);
   if (!m.settled) {
@@ -68,7 +69,7 @@ Command rest(const Percept& in, const Params& p, RobotMemory& mem, const TaSight
   // back to its own deployment point with the field of Eq. (4)-(5), then rest, LEDs off
   const Command cmd =
       m.give_way > 0 ? give_way(p, mem) : drive_to(in, p, mem, mem.start, p.d_arrive, Led::kBlack);
-  m.arrived = m.arrived || 100.0 * dist(in.pose.p, mem.start) <= p.d_arrive;
+  m.arrived = m.arrived || kCmPerM * dist(in.pose.p, mem.start) <= p.d_arrive;
   watch_for_pressing(in, p, mem);
   // refound_starved: JOIN a founder allocating from the resting robots (T11)
   const auto id = static_cast<std::uint8_t>(in.id);

@@ -15,6 +15,7 @@
 #include "sim/controller.hpp"
 #include "sim/motion.hpp"
 #include "transition_table.hpp"
+#include "units.hpp"
 
 namespace swarmpath::sim {
 
@@ -151,7 +152,7 @@ void dm_initiates(const TaContext& c, RobotMemory& mem) {
   if (c.p.share_goal && ack.has_goal()) {
     // R: where the founder saw the goal, relative to the nest: travel there once the guide is lost
     mem.pf.sighting =
-        mem.nest + 0.01 * Vec2{static_cast<double>(ack.goal_x_cm), static_cast<double>(ack.goal_y_cm)};
+        mem.nest + kCm * Vec2{static_cast<double>(ack.goal_x_cm), static_cast<double>(ack.goal_y_cm)};
     mem.pf.has_sighting = true;
     to_sighting = c.p.site_fidelity;
   }
@@ -171,7 +172,7 @@ void join_chain_end(const TaContext& c, RobotMemory& mem) {
   }
   // recruit_call: out of view, where the medium says the caller is; claimed on the way
   const RabMessage& call = *c.sight.call;
-  mem.pf.sighting = c.in.pose.p + (call.range_cm / 100.0) * c.in.pose.to_world(unit(call.bearing()));
+  mem.pf.sighting = c.in.pose.p + (call.range_cm / kCmPerM) * c.in.pose.to_world(unit(call.bearing()));
   mem.pf.has_sighting = true;
   mem.pf.explore_leg = ExploreLeg::kToSighting;
   mem.pf.answering = call.sender;
@@ -243,7 +244,7 @@ Command found(const Percept& in, const Params& p, RobotMemory& mem, int swarm, b
   const auto t = static_cast<std::uint16_t>(std::min(65535.0, std::round(m.t_founder_s)));
   TaMessage msg = founder_tick(m.protocol, id, t, in.rab, p.resend_lost_ack);
   if (p.share_goal && mem.pf.has_sighting) {  // R: its messages (the ACK) tell where it saw the goal
-    const Vec2 rel = 100.0 * (mem.pf.sighting - mem.nest);
+    const Vec2 rel = kCmPerM * (mem.pf.sighting - mem.nest);
     msg.flags = static_cast<std::uint8_t>(msg.flags | kFlagGoal);
     constexpr double kFar = 1e9;  // [cm] far beyond any arena (kMaxArenaSide); encode clamps it
     msg.goal_x_cm = static_cast<std::int32_t>(std::clamp(std::round(rel.x), -kFar, kFar));
@@ -266,7 +267,7 @@ std::uint8_t ta_row_number(std::string_view row) { return row_number(ta_transiti
 void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaSight& sight) {
   sight = TaSight{};
   sight.exploring = mem.pf.state == PfState::kExploring;
-  sight.nest_distance_cm = 100.0 * dist(in.pose.p, mem.nest);
+  sight.nest_distance_cm = kCmPerM * dist(in.pose.p, mem.nest);
   const bool allocating = mem.ta.protocol.acks > 0;
   for (const Blob& b : in.blobs) {
     if (b.emitter == kGoalEmitter && b.distance_cm <= p.d_detect) sight.goal_found = true;
@@ -285,7 +286,7 @@ void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaS
   if (mem.ta.state != TaState::kRestingTask) sight.dm = decision_maker_tick(id, in.rab, p.founder_seniority);
   // rest_recruit: only at its deployment point (robots passing by can push a resting one far off)
   if (p.rest_recruit && mem.ta.state == TaState::kRestingTask && mem.ta.arrived &&
-      100.0 * dist(in.pose.p, mem.start) <= p.d_detect) {
+      kCmPerM * dist(in.pose.p, mem.start) <= p.d_detect) {
     sight.chain_end = free_subgoal_in_view(in);
     if (sight.chain_end == nullptr && p.recruit_call) sight.call = unanswered_call(in.rab);
   }

@@ -5,6 +5,7 @@
 
 namespace swarmpath::sim {
 
-inline constexpr double kCm = 0.01;  ///< metres per cm
+inline constexpr double kCm = 0.01;       ///< metres per cm
+inline constexpr double kCmPerM = 100.0;  ///< cm per metre
 
 }  // namespace swarmpath::sim
