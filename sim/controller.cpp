@@ -44,6 +44,15 @@ bool robot_listens(Mode m, const Params& p, const RobotMemory& mem) {
          (mem.ta.state == TaState::kRestingTask && p.rest_recruit && p.recruit_call);
 }
 
+RabKinds rab_kinds(Mode m, const RabPayload& payload) {
+  return m == Mode::kTaskAllocation ? message_kinds(decode(payload)) : kEveryRabKind;
+}
+
+RabKinds rab_interest(Mode m, const Params& p, const RobotMemory& mem) {
+  if (!robot_listens(m, p, mem)) return 0;
+  return m == Mode::kTaskAllocation ? ta_interest(p, mem) : kEveryRabKind;
+}
+
 Led initial_led(Mode m) {
   switch (m) {
     case Mode::kDiffusion:

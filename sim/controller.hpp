@@ -55,6 +55,15 @@ SensorNeeds sensor_needs(Mode m);
 /// senses it at all: in task allocation, only scouts, founders and decision makers do.
 bool robot_listens(Mode m, const Params& p, const RobotMemory& mem);
 
+/// The kinds of message (RabKinds bits) a payload broadcast in mode `m` carries: the medium delivers
+/// it only to robots that read one of them (kEveryRabKind outside task allocation).
+RabKinds rab_kinds(Mode m, const RabPayload& payload);
+
+/// The kinds of message robot `mem` reads this tick, in its state before its control step: 0 when it
+/// does not listen (robot_listens), else every kind that a reading of its inbox in this tick may look
+/// at, whatever row fires (ta_interest).
+RabKinds rab_interest(Mode m, const Params& p, const RobotMemory& mem);
+
 /// The LED colour robots show before their first control step.
 Led initial_led(Mode m);
 

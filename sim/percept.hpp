@@ -50,6 +50,12 @@ struct Blob {
 
 using RabPayload = std::array<std::uint8_t, kRabPayloadBytes>;
 
+/// Kinds of range-and-bearing message, as bits that the controller gives its messages (rab_kinds):
+/// the medium delivers a message only to the robots that read one of its kinds this tick
+/// (rab_interest), so that a robot is not handed the crowd's chatter it would skip.
+using RabKinds = std::uint32_t;
+inline constexpr RabKinds kEveryRabKind = ~RabKinds{0};
+
 /// One range-and-bearing reception, sent the tick before (SPEC §1.3).
 struct RabMessage {
   int sender = 0;

@@ -2,6 +2,7 @@
 #include "sensors.hpp"
 
 #include <algorithm>
+#include <optional>
 
 namespace swarmpath::sim {
 
@@ -179,12 +180,13 @@ void sense_camera(const SensorView& v, int id, std::vector<Blob>& out) {
   });
 }
 
-void sense_rab(const SensorView& v, int id, std::vector<RabMessage>& out) {
+void sense_rab(const SensorView& v, int id, RabKinds interest, std::vector<RabMessage>& out) {
   const Pose& me = v.poses[static_cast<std::size_t>(id)];
-  const NearShapes near(v, *v.rab_bins, me.p, kRabRange);
+  std::optional<NearShapes> near;  // found when the first message in range needs its line of sight
   v.grid->for_each_within(me.p, kRabRange, [&](int j, Vec2 pj) {
-    if (j == id || !v.rab_sending[static_cast<std::size_t>(j)]) return;
-    if (blocked_by_statics(v, near, me.p, pj)) return;
+    if (j == id || (v.rab_kinds[static_cast<std::size_t>(j)] & interest) == 0) return;
+    if (!near) near.emplace(v, *v.rab_bins, me.p, kRabRange);
+    if (blocked_by_statics(v, *near, me.p, pj)) return;
     const Vec2 d = pj - me.p;
     out.push_back({j, 100.0 * norm(d), me.to_local(d), v.rab_out[static_cast<std::size_t>(j)]});
   });

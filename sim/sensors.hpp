@@ -21,6 +21,7 @@ struct SensorView {
   std::span<const int> tags;
   std::span<const std::uint8_t> rab_sending;
   std::span<const RabPayload> rab_out;
+  std::span<const RabKinds> rab_kinds;  ///< the kinds of each robot's message (0: it sent none)
   const RobotGrid* grid = nullptr;
   std::span<const Shape> shapes;           ///< every obstacle and wall
   const ShapeBins* touch_bins = nullptr;   ///< shapes within proximity reach of a cell
@@ -44,7 +45,7 @@ void sense_proximity(const SensorView& v, int id, std::array<double, kProximityC
 void sense_camera(const SensorView& v, int id, std::vector<Blob>& out);
 
 /// Range and bearing: appends the payloads broadcast last tick by robots within kRabRange with
-/// line of sight past the obstacles.
-void sense_rab(const SensorView& v, int id, std::vector<RabMessage>& out);
+/// line of sight past the obstacles, of the kinds in `interest` (v.rab_kinds), in grid order.
+void sense_rab(const SensorView& v, int id, RabKinds interest, std::vector<RabMessage>& out);
 
 }  // namespace swarmpath::sim

@@ -12,6 +12,7 @@ SensorView sensor_view(const Scenario& s, const Params& p, const World& w) {
   view.tags = w.tags;
   view.rab_sending = w.rab_sending;
   view.rab_out = w.rab_out;
+  view.rab_kinds = w.rab_kinds;
   view.grid = &w.grid;
   view.shapes = w.shapes;
   view.touch_bins = &w.touch_bins;
@@ -40,8 +41,13 @@ void sense_robot(const SensorView& view, const Params& p, World& w, std::size_t 
   const std::size_t inbox_from = inbox.size();
   if (w.needs.proximity) sense_proximity(view, id, in.proximity);
   if (w.needs.camera) sense_camera(view, id, blobs);
+  // the kinds of message it reads this tick (rab_interest), or every kind when the medium hands
+  // every message to every robot that listens (World::rab_by_kind)
   const bool listens = w.needs.rab && robot_listens(w.mode, p, w.memory[i]);
-  if (listens) sense_rab(view, id, inbox);
+  const RabKinds interest = !listens        ? 0
+                            : w.rab_by_kind ? rab_interest(w.mode, p, w.memory[i])
+                                            : kEveryRabKind;
+  if (interest != 0) sense_rab(view, id, interest, inbox);
   if (!w.faults.noisy) return;
   RobotNoise& noise = w.faults.noise[i];
   in.pose = pose_noise(w.faults.model, noise.pose, w.poses[i]);
@@ -104,6 +110,7 @@ void act_all(World& w) {
     w.tags[i] = c.tag;
     w.rab_sending[i] = c.rab_send ? 1 : 0;
     w.rab_out[i] = c.rab;
+    w.rab_kinds[i] = !c.rab_send ? 0 : w.rab_by_kind ? rab_kinds(w.mode, c.rab) : kEveryRabKind;
   }
 }
 

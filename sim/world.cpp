@@ -137,6 +137,7 @@ World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t se
   w.tags.assign(n, kNobody);
   w.rab_sending.assign(n, 0);
   w.rab_out.assign(n, RabPayload{});
+  w.rab_kinds.assign(n, 0);
   w.commands.assign(n, Command{});
   w.memory.reserve(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -149,6 +150,8 @@ World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t se
   w.physics->read_poses(w.poses);
   for (std::size_t i = 0; i < n; ++i) w.positions[i] = w.poses[i].p;
   w.faults = make_fault_state(s.faults, static_cast<int>(n), seed);
+  // packet loss draws once per message a robot is handed: the medium hands it every message
+  w.rab_by_kind = !(w.faults.model.packet_loss > 0);
   w.grid.reset(grid_bounds(s), s.sim.grid_cell, n);
   w.grid.build(w.positions);
 

@@ -37,6 +37,11 @@ struct World {
   std::vector<int> tags;                  ///< advertised with the LEDs (vision + ID)
   std::vector<std::uint8_t> rab_sending;  ///< broadcast last tick
   std::vector<RabPayload> rab_out;
+  std::vector<RabKinds> rab_kinds;  ///< the kinds of message each robot broadcast last tick (0: none)
+  /// The medium hands each robot only the kinds of message it reads (rab_interest); false: every
+  /// message to every robot that listens (what the readers then see is the same, at more cost).
+  /// make_world sets it false under packet loss, which draws a loss for every message handed out.
+  bool rab_by_kind = true;
   std::vector<RobotMemory> memory;
   std::vector<Command> commands;
   FaultState faults;  ///< failures and noise streams (Scenario::faults)

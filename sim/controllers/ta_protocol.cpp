@@ -201,6 +201,17 @@ TaMessage fetch_message(std::uint8_t my_id, int parent) {
 
 int fetch_for(const TaMessage& m) { return m.fetch() && m.state == kFetchState ? named_emitter(m) : kNobody; }
 
+RabKinds message_kinds(const TaMessage& m) {
+  RabKinds k = 0;
+  if (founder_message(m.type)) k |= kKindFounder;
+  if (m.alloc_done()) k |= kKindAllocDone;
+  if (m.type == MsgType::kJoin) k |= kKindJoin;
+  if (claimed_emitter(m) != kNobody) k |= kKindClaim;
+  if (fetch_for(m) != kNobody) k |= kKindFetch;
+  if (m.recall()) k |= kKindRecall;
+  return k;
+}
+
 int robots_needed(double t_seconds, double speed_cm_s, double r_vis_cm, double delta, int n_min, int swarm) {
   const double l = speed_cm_s * t_seconds;                       // Eq. (1)
   const double n0 = l / r_vis_cm;                                // Eq. (2)

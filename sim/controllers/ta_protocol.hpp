@@ -77,6 +77,15 @@ struct TaMessage {
   bool fetch() const { return (flags & kFlagFetch) != 0; }
 };
 
+/// The kinds of TA message (RabKinds bits), one for each way a reader of the inbox picks messages:
+/// a reader looks only at messages of the kinds it names in ta_interest.
+inline constexpr RabKinds kKindFounder = 1;    ///< REQUEST, ACK, DONE (founder_message)
+inline constexpr RabKinds kKindAllocDone = 2;  ///< the ALLOC_DONE flag
+inline constexpr RabKinds kKindJoin = 4;       ///< JOIN
+inline constexpr RabKinds kKindClaim = 8;      ///< a claim (claimed_emitter), recruit_call's too
+inline constexpr RabKinds kKindFetch = 16;     ///< a fetch message (fetch_for)
+inline constexpr RabKinds kKindRecall = 32;    ///< a founder allocating from the resting robots
+
 /// A set of robot ids as they travel on the medium (one byte each).
 struct IdSet {
   std::array<std::uint64_t, 4> bits{};
@@ -192,6 +201,9 @@ TaMessage claim_message(std::uint8_t my_id, int emitter);
 
 /// The emitter a message claims (claim_message), or kNobody.
 int claimed_emitter(const TaMessage& m);
+
+/// The kinds (kKind*) of message `m` is.
+RabKinds message_kinds(const TaMessage& m);
 
 /// Calls f(sender, emitter) for every claim on the medium this tick (claim_message), whoever sends it.
 template <typename F>

@@ -314,6 +314,23 @@ const TaTransition* ta_transition(const TaContext& c, RobotMemory& mem) {
   return nullptr;
 }
 
+RabKinds ta_interest(const Params& p, const RobotMemory& mem) {
+  switch (mem.ta.state) {
+    case TaState::kScout:        // every reading: T2 (a founder reads JOINs), T3, T7, path formation
+    case TaState::kGoalFounder:  // T8, T7f, T9 (path formation), the protocol (JOINs)
+      return kEveryRabKind;
+    case TaState::kDecisionMaker:  // the protocol; T5 may start path formation this tick (claims, fetches)
+      return kKindFounder | kKindAllocDone | kKindClaim | kKindFetch;
+    case TaState::kPathFormation:  // path formation's claims and fetches; T12 (a founder reads JOINs)
+      return kKindClaim | kKindFetch | kKindJoin;
+    case TaState::kRestingTask:  // at its deployment point: T10's claims and calls, T11's recalls, and
+                                 // path formation after them
+      return mem.ta.arrived && (p.rest_recruit || p.refound_starved) ? kKindClaim | kKindFetch | kKindRecall
+                                                                     : 0;
+  }
+  return kEveryRabKind;
+}
+
 Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& mem, int swarm) {
   TaMemory& m = mem.ta;
   TaSight sight;

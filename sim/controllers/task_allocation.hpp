@@ -109,6 +109,11 @@ void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaS
 /// Applies the first matching row (if any); returns it or nullptr.
 const TaTransition* ta_transition(const TaContext& c, RobotMemory& mem);
 
+/// The kinds of message (kKind*) a robot reads in its current state: those its perception reads, and
+/// those the state a row takes it to this tick reads (a founder's JOINs, path formation's claims).
+/// Whether it listens at all is robot_listens's (sim/controller.hpp).
+RabKinds ta_interest(const Params& p, const RobotMemory& mem);
+
 /// One control step of a robot in task-allocation mode (N = `swarm` robots).
 Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& mem, int swarm);
 
