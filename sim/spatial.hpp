@@ -114,6 +114,31 @@ class RobotGrid {
     }
   }
 
+  /// The same, skipping every cell c for which keep(c) is false (the others in the same order).
+  template <typename Keep, typename F>
+  void for_each_within(Vec2 p, double r, Keep&& keep, F&& f) const {
+    const int i0 = frame_.cell_x(p.x - r);
+    const int i1 = frame_.cell_x(p.x + r);
+    const int j0 = frame_.cell_y(p.y - r);
+    const int j1 = frame_.cell_y(p.y + r);
+    const double r2 = r * r;
+    for (int j = j0; j <= j1; ++j) {
+      for (int c = j * frame_.nx + i0; c <= j * frame_.nx + i1; ++c) {
+        if (!keep(c)) continue;
+        const int end = start_[static_cast<std::size_t>(c) + 1];
+        for (int k = start_[static_cast<std::size_t>(c)]; k < end; ++k) {
+          const Vec2 q = sorted_[static_cast<std::size_t>(k)];
+          if (norm2(q - p) <= r2) f(items_[static_cast<std::size_t>(k)], q);
+        }
+      }
+    }
+  }
+
+  /// How many cells; the cell robot `id` was in at the last build.
+  std::size_t cells() const { return frame_.cells(); }
+
+  int cell_of(int id) const { return cell_of_[static_cast<std::size_t>(id)]; }
+
  private:
   CellFrame frame_;
   std::vector<int> start_;

@@ -13,6 +13,7 @@ SensorView sensor_view(const Scenario& s, const Params& p, const World& w) {
   view.rab_sending = w.rab_sending;
   view.rab_out = w.rab_out;
   view.rab_kinds = w.rab_kinds;
+  view.rab_cell_kinds = w.rab_cell_kinds;
   view.grid = &w.grid;
   view.shapes = w.shapes;
   view.touch_bins = &w.touch_bins;
@@ -55,9 +56,19 @@ void sense_robot(const SensorView& view, const Params& p, World& w, std::size_t 
   if (listens) rab_noise(w.faults.model, noise.rab, inbox, inbox_from);
 }
 
+// World::rab_cell_kinds from this tick's grid and last tick's messages.
+void tally_rab_cells(World& w) {
+  if (!w.needs.rab) return;
+  w.rab_cell_kinds.assign(w.grid.cells(), 0);
+  for (std::size_t i = 0; i < w.rab_kinds.size(); ++i) {
+    w.rab_cell_kinds[static_cast<std::size_t>(w.grid.cell_of(static_cast<int>(i)))] |= w.rab_kinds[i];
+  }
+}
+
 }  // namespace
 
 void sense_all(const Scenario& s, const Params& p, World& w) {
+  tally_rab_cells(w);
   const SensorView view = sensor_view(s, p, w);
   const std::size_t n = w.poses.size();
   w.percepts.resize(n);
@@ -86,6 +97,7 @@ void control_all(const Params& p, World& w) {
 }
 
 void sense_and_control_all(const Scenario& s, const Params& p, World& w) {
+  tally_rab_cells(w);
   const SensorView view = sensor_view(s, p, w);
   Percept in;
   for (std::size_t i = 0; i < w.poses.size(); ++i) {

@@ -38,6 +38,9 @@ struct World {
   std::vector<std::uint8_t> rab_sending;  ///< broadcast last tick
   std::vector<RabPayload> rab_out;
   std::vector<RabKinds> rab_kinds;  ///< the kinds of message each robot broadcast last tick (0: none)
+  /// Per cell of `grid`: the kinds its robots broadcast last tick (their rab_kinds or'ed), so that a
+  /// listener skips the cells that hold nothing it reads. Tallied as a tick's sensing starts.
+  std::vector<RabKinds> rab_cell_kinds;
   /// The medium hands each robot only the kinds of message it reads (rab_interest); false: every
   /// message to every robot that listens (what the readers then see is the same, at more cost).
   /// make_world sets it false under packet loss, which draws a loss for every message handed out.

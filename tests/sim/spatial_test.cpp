@@ -43,6 +43,42 @@ TEST(RobotGrid, FindsExactlyTheRobotsWithinRangeInCellThenIdOrderWithTheirPositi
   }
 }
 
+// The query that skips cells (the range-and-bearing medium skips cells that sent nothing a
+// listener reads) gives the full query's robots in the same order, less those of the skipped cells.
+TEST(RobotGrid, SkippingCellsKeepsTheOrderOfTheOthers) {
+  const Aabb bounds{{-5.0, -3.0}, {5.0, 3.0}};
+  const double cell = 0.7;
+  Rng rng(7);
+  std::vector<Vec2> positions(400);
+  for (Vec2& p : positions) p = {rng.uniform(-5.5, 5.5), rng.uniform(-3.5, 3.5)};
+  RobotGrid grid;
+  grid.reset(bounds, cell, positions.size());
+  grid.build(positions);
+  for (std::size_t id = 0; id < positions.size(); ++id) {
+    EXPECT_EQ(grid.cell_of(static_cast<int>(id)), CellFrame(bounds, cell).index(positions[id]));
+  }
+  std::size_t within = 0;
+  std::size_t skipped = 0;
+  for (int q = 0; q < 100; ++q) {
+    const Vec2 p{rng.uniform(-5.0, 5.0), rng.uniform(-3.0, 3.0)};
+    const double r = rng.uniform(0.5, 3.0);
+    const auto keep = [](int c) { return c % 3 != 1; };
+    std::vector<int> all;
+    grid.for_each_within(p, r, [&](int id, Vec2) {
+      ++within;
+      if (keep(grid.cell_of(id))) {
+        all.push_back(id);
+      } else {
+        ++skipped;
+      }
+    });
+    std::vector<int> kept;
+    grid.for_each_within(p, r, keep, [&](int id, Vec2) { kept.push_back(id); });
+    EXPECT_EQ(kept, all) << "query " << q;
+  }
+  EXPECT_GT(skipped, within / 5);  // a third of the cells skipped
+}
+
 TEST(RobotGrid, ARebuildForgetsTheOldPositions) {
   const Aabb bounds{{0.0, 0.0}, {4.0, 4.0}};
   RobotGrid grid;
