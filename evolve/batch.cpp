@@ -38,9 +38,10 @@ std::uint32_t SimBatch::add_params(const sim::Params& p) {
 }
 
 double expected_cost(const sim::Scenario& s, sim::Mode mode) {
-  // robot-ticks per second of whole runs on one core (README, sim_bench Completion): pf 1.39 M,
-  // ta 408 k; diffusion runs no controller logic to speak of
-  const double per_robot_tick = mode == sim::Mode::kTaskAllocation ? 3.4
+  // the cost of a robot-tick relative to path formation's, from whole runs on one core
+  // (docs/speed.md, bench/speed_report): task allocation 1.23x since the range-and-bearing medium
+  // hands each robot only what it reads (3.4x before); diffusion runs no controller logic to speak of
+  const double per_robot_tick = mode == sim::Mode::kTaskAllocation ? 1.25
                                 : mode == sim::Mode::kDiffusion    ? 0.5
                                                                    : 1.0;
   return static_cast<double>(s.robots) * static_cast<double>(s.sim.max_ticks) * per_robot_tick;

@@ -81,8 +81,8 @@ TEST(Batch, LongestExpectedTasksAreHandedOutFirst) {
              {0, small, sim::Mode::kTaskAllocation, 1},
              {0, longer, sim::Mode::kPathFormation, 1},
              {0, small, sim::Mode::kPathFormation, 2}};
-  // 40 000 (3), then TA's 8 000 x 3.4 (2), 20 000 (1), then the two 8 000 in task order
-  EXPECT_EQ(handout_order(b), (std::vector<std::uint32_t>{3, 2, 1, 0, 4}));
+  // 40 000 (3), 20 000 (1), then TA's 8 000 x 1.25 (2), then the two 8 000 in task order
+  EXPECT_EQ(handout_order(b), (std::vector<std::uint32_t>{3, 1, 2, 0, 4}));
   EXPECT_GT(expected_cost(*b.scenarios[small], sim::Mode::kTaskAllocation),
             expected_cost(*b.scenarios[small], sim::Mode::kPathFormation));
 }
