@@ -48,6 +48,7 @@ bench: build
 	./build/release/bench/sim_bench --benchmark_repetitions=9 --benchmark_enable_random_interleaving=true \
 		--benchmark_report_aggregates_only=true
 	./build/release/bench/growth 15
+	./build/release/bench/speed_report --repeat 3
 	bash scripts/viewer_speed.sh
 
 verify-genomes: build

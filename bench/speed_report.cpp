@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: MIT
 // The speed table against ARGoS (bench/workloads.hpp): each workload's whole run (world set-up
-// included) on one core, its CPU time the best of --repeat runs (the measure; the median
-// beside it), the repetitions interleaved so
-// that a host's slow and fast minutes fall on every workload alike. Prints a markdown table with
+// included) on one core, its CPU time the best of --repeat runs (as the first figures against ARGoS
+// were taken; the median beside it), the repetitions interleaved so that a host's slow and fast
+// minutes fall on every workload alike. Prints a markdown table with
 // ARGoS's figures and the targets beside ours, the growth of the cost per robot-tick from 100 to
 // 1 000 robots and task allocation's cost per robot-tick over path formation's.
 //
