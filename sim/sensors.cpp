@@ -182,11 +182,9 @@ void sense_camera(const SensorView& v, int id, std::vector<Blob>& out) {
 
 void sense_rab(const SensorView& v, int id, RabKinds interest, std::vector<RabMessage>& out) {
   const Pose& me = v.poses[static_cast<std::size_t>(id)];
-  std::optional<NearShapes> near;  // found when the first message in range needs its line of sight
-  // a cell some robot of which sent a kind it reads (every cell when the view has no tally)
-  const bool tallied = !v.rab_cell_kinds.empty();
-  const auto heard_in = [&](int cell) {
-    return !tallied || (v.rab_cell_kinds[static_cast<std::size_t>(cell)] & interest) != 0;
+  std::optional<NearShapes> near;        // found when the first message in range needs its line of sight
+  const auto heard_in = [&](int cell) {  // a cell some robot of which sent a kind it reads
+    return (v.rab_cell_kinds[static_cast<std::size_t>(cell)] & interest) != 0;
   };
   v.grid->for_each_within(me.p, kRabRange, heard_in, [&](int j, Vec2 pj) {
     if (j == id || (v.rab_kinds[static_cast<std::size_t>(j)] & interest) == 0) return;

@@ -22,7 +22,7 @@ struct SensorView {
   std::span<const std::uint8_t> rab_sending;
   std::span<const RabPayload> rab_out;
   std::span<const RabKinds> rab_kinds;  ///< the kinds of each robot's message (0: it sent none)
-  /// per grid cell, its robots' rab_kinds or'ed (empty: not tallied, every cell is walked)
+  /// per grid cell, its robots' rab_kinds or'ed (World::rab_cell_kinds: sense_all and step tally it)
   std::span<const RabKinds> rab_cell_kinds;
   const RobotGrid* grid = nullptr;
   std::span<const Shape> shapes;           ///< every obstacle and wall
