@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "checkpoint.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -17,15 +18,12 @@ namespace {
 constexpr const char* kFormat = "swarmpath evolve checkpoint";
 constexpr int kVersion = 2;  // 2: stats and history carry the multi-objective fields
 
+// what every refusal of a checkpoint field adds
+constexpr const char* kDamaged = " (the checkpoint was damaged or edited: cannot resume)";
+
 // NaN (no successful run) as null
 nlohmann::ordered_json number_or_null(double v) {
   return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
-}
-
-double number_from(const nlohmann::json& j, const char* key) {
-  const nlohmann::json& v = j.at(key);
-  if (v.is_null()) return std::numeric_limits<double>::quiet_NaN();
-  return v.get<double>();
 }
 
 }  // namespace
@@ -42,16 +40,17 @@ nlohmann::ordered_json stats_json(const CandidateStats& s) {
   return j;
 }
 
-CandidateStats stats_from_json(const nlohmann::json& j) {
+CandidateStats stats_from_state(const StateReader& r) {
+  constexpr double kInf = StateReader::kInf;
   CandidateStats s;
-  s.fitness = number_from(j, "fitness");
-  if (std::isnan(s.fitness)) s.fitness = std::numeric_limits<double>::infinity();
-  s.success_rate = j.at("success_rate").get<double>();
-  s.mean_ticks = j.at("mean_ticks").get<double>();
-  s.mean_path_ratio = number_from(j, "mean_path_ratio");
-  s.mean_robots = j.at("mean_robots").get<double>();
-  s.mean_robots_fraction = j.at("mean_robots_fraction").get<double>();
-  s.runs = j.at("runs").get<int>();
+  s.fitness = r.number_or_null("fitness", 0.0, kInf);
+  if (std::isnan(s.fitness)) s.fitness = kInf;
+  s.success_rate = r.number("success_rate", 0.0, 1.0);
+  s.mean_ticks = r.number("mean_ticks", 0.0, kInf);
+  s.mean_path_ratio = r.number_or_null("mean_path_ratio", 0.0, kInf);
+  s.mean_robots = r.number("mean_robots", 0.0, kInf);
+  s.mean_robots_fraction = r.number("mean_robots_fraction", 0.0, 1.0);
+  s.runs = static_cast<int>(r.integer("runs", 0, std::numeric_limits<std::int32_t>::max()));
   return s;
 }
 
@@ -103,64 +102,87 @@ nlohmann::ordered_json checkpoint_json(const RunState& s) {
 }
 
 RunState checkpoint_from_json(const nlohmann::json& j) {
-  try {
-    if (j.at("format").get<std::string>() != kFormat)
-      throw std::runtime_error("not a swarmpath evolve checkpoint");
-    if (j.at("version").get<int>() != kVersion) {
-      throw std::runtime_error("checkpoint version " + j.at("version").dump() + " (this build reads " +
-                               std::to_string(kVersion) + ")");
-    }
-    RunState s;
-    s.config_hash = j.at("config_hash").get<std::string>();
-    s.generation = j.at("generation").get<std::int64_t>();
-    s.evaluations = j.at("evaluations").get<std::int64_t>();
-    s.runs = j.at("runs").get<std::int64_t>();
-    s.seconds = j.at("seconds").get<double>();
-    s.optimizer = j.at("optimizer");
-    for (const nlohmann::json& r : j.at("history")) {
-      GenerationRecord g;
-      g.generation = r.at("generation").get<std::int64_t>();
-      g.best = r.at("best").get<double>();
-      g.mean = r.at("mean").get<double>();
-      g.std = r.at("std").get<double>();
-      g.best_so_far = r.at("best_so_far").get<double>();
-      g.best_success_rate = r.at("best_success_rate").get<double>();
-      g.evaluations = r.at("evaluations").get<std::int64_t>();
-      g.seconds = r.at("seconds").get<double>();
-      g.hypervolume = r.at("hypervolume").get<double>();
-      g.front_size = r.at("front_size").get<int>();
-      g.feasible = r.at("feasible").get<int>();
-      g.front_min = r.at("front_min").get<Vector>();
-      // the tuned values came later: checkpoints without them still resume
-      for (auto [key, v] : {std::pair{"tuned_best", &g.tuned_best},
-                            {"tuned_mean", &g.tuned_mean},
-                            {"tuned_min", &g.tuned_min},
-                            {"tuned_max", &g.tuned_max}}) {
-        if (r.contains(key)) *v = r.at(key).get<Vector>();
-      }
-      if (r.contains("validation_runs")) {
-        g.validation_runs = r.at("validation_runs").get<int>();
-        g.validation_fitness = r.at("validation_fitness").get<double>();
-        g.validation_success_rate = r.at("validation_success_rate").get<double>();
-      }
-      s.history.push_back(g);
-    }
-    for (const nlohmann::json& e : j.at("elites")) {
-      Elite el;
-      el.x = e.at("x").get<Vector>();
-      el.values = e.at("values").get<std::vector<double>>();
-      el.generation = e.at("generation").get<std::int64_t>();
-      el.candidate = e.at("candidate").get<int>();
-      el.stats = stats_from_json(e.at("stats"));
-      s.elites.push_back(std::move(el));
-    }
-    if (s.generation < 0 || static_cast<std::size_t>(s.generation) != s.history.size()) {
-      throw std::runtime_error("generation count and history disagree");
-    }
-    return s;
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(std::string("malformed checkpoint: ") + e.what());
+  // every field is read strictly (StateReader) and checked against the rest of the checkpoint
+  const StateReader r(j, "");
+  if (r.text("format") != kFormat) r.fail("format", "not a swarmpath evolve checkpoint");
+  if (const std::int64_t v = r.integer("version", 0, 1000); v != kVersion) {
+    r.fail("version", "checkpoint version " + std::to_string(v) + " (this build reads " +
+                          std::to_string(kVersion) + ")");
   }
+  constexpr double kInf = StateReader::kInf;
+  constexpr std::int64_t kBig = std::int64_t{1} << 53;
+  constexpr std::int64_t kInt = std::numeric_limits<std::int32_t>::max();
+  RunState s;
+  s.config_hash = r.text("config_hash");
+  s.generation = r.integer("generation", 0, kBig);
+  s.evaluations = r.integer("evaluations", 0, kBig);
+  s.runs = r.integer("runs", 0, kBig);
+  s.seconds = r.number("seconds", 0.0, kInf);
+  (void)r.object("optimizer");
+  s.optimizer = r.at("optimizer");
+  for (const StateReader& h : r.objects("history")) {
+    GenerationRecord g;
+    const auto i = static_cast<std::int64_t>(s.history.size());
+    g.generation = h.integer("generation", 0, kBig);
+    if (g.generation != i)
+      h.fail("generation", "must be " + std::to_string(i) + " (the rows count generations)");
+    g.best = h.number("best", -kInf, kInf);
+    g.mean = h.number("mean", -kInf, kInf);
+    g.std = h.number("std", 0.0, kInf);
+    g.best_so_far = h.number("best_so_far", -kInf, kInf);
+    const double lowest = i == 0 ? g.best : std::min(s.history.back().best_so_far, g.best);
+    if (g.best_so_far != lowest) {
+      h.fail("best_so_far", "must be the lowest best so far (" + number_text(lowest) + "), got " +
+                                number_text(g.best_so_far));
+    }
+    g.best_success_rate = h.number("best_success_rate", 0.0, 1.0);
+    g.evaluations = h.integer("evaluations", 1, kBig);
+    if (i > 0 && g.evaluations <= s.history.back().evaluations) {
+      h.fail("evaluations", "must grow from generation to generation (the count of all candidates so far)");
+    }
+    g.seconds = h.number("seconds", i == 0 ? 0.0 : s.history.back().seconds, kInf);
+    g.hypervolume = h.number("hypervolume", 0.0, kInf);
+    g.front_size = static_cast<int>(h.integer("front_size", 0, kInt));
+    g.feasible = static_cast<int>(h.integer("feasible", 0, kInt));
+    g.front_min = h.numbers("front_min", StateReader::kAny, -kInf, kInf);
+    // the tuned values came later: checkpoints without them still resume
+    for (auto [key, v] : {std::pair{"tuned_best", &g.tuned_best},
+                          {"tuned_mean", &g.tuned_mean},
+                          {"tuned_min", &g.tuned_min},
+                          {"tuned_max", &g.tuned_max}}) {
+      if (h.has(key)) *v = h.numbers(key, StateReader::kAny, -kInf, kInf);
+    }
+    if (h.has("validation_runs")) {
+      g.validation_runs = static_cast<int>(h.integer("validation_runs", 1, kInt));
+      g.validation_fitness = h.number_or_null("validation_fitness", 0.0, kInf);
+      if (std::isnan(g.validation_fitness)) g.validation_fitness = kInf;
+      g.validation_success_rate = h.number("validation_success_rate", 0.0, 1.0);
+    }
+    s.history.push_back(g);
+  }
+  if (static_cast<std::size_t>(s.generation) != s.history.size()) {
+    r.fail("generation", "is " + std::to_string(s.generation) + " but the history holds " +
+                             std::to_string(s.history.size()) + " generations");
+  }
+  const std::int64_t counted = s.history.empty() ? 0 : s.history.back().evaluations;
+  if (s.evaluations != counted) {
+    r.fail("evaluations",
+           "is " + std::to_string(s.evaluations) + " but the history counts " + std::to_string(counted));
+  }
+  if (!s.history.empty() && s.seconds != s.history.back().seconds) {
+    r.fail("seconds", "is " + number_text(s.seconds) + " but the history's last row says " +
+                          number_text(s.history.back().seconds));
+  }
+  for (const StateReader& e : r.objects("elites")) {
+    Elite el;
+    el.x = e.numbers("x", StateReader::kAny, 0.0, 1.0);
+    el.values = e.numbers("values", StateReader::kAny, -kInf, kInf);
+    el.generation = e.integer("generation", 0, std::max<std::int64_t>(0, s.generation - 1));
+    el.candidate = static_cast<int>(e.integer("candidate", 0, kInt));
+    el.stats = stats_from_state(e.object("stats"));
+    s.elites.push_back(std::move(el));
+  }
+  return s;
 }
 
 RunState read_checkpoint(const std::string& path) {
@@ -171,8 +193,8 @@ RunState read_checkpoint(const std::string& path) {
     return checkpoint_from_json(nlohmann::json::parse(in));
   } catch (const nlohmann::json::exception& e) {
     throw sim::ConfigError(path, 0, "", std::string("cannot resume: not JSON: ") + e.what());
-  } catch (const std::runtime_error& e) {
-    throw sim::ConfigError(path, 0, "", std::string("cannot resume: ") + e.what());
+  } catch (const StateError& e) {
+    throw sim::ConfigError(path, 0, e.field(), e.message() + kDamaged);
   }
 }
 

@@ -15,6 +15,7 @@
 #include "evolve/atomic_write.hpp"
 #include "evolve/fitness.hpp"
 #include "evolve/optim/optimizer.hpp"
+#include "evolve/optim/state_reader.hpp"
 
 namespace swarmpath::evolve {
 
@@ -65,14 +66,18 @@ struct RunState {
 };
 
 nlohmann::ordered_json stats_json(const CandidateStats& s);
-CandidateStats stats_from_json(const nlohmann::json& j);
+/// Reads stats_json's object strictly (StateError naming the field).
+CandidateStats stats_from_state(const StateReader& r);
 
 nlohmann::ordered_json checkpoint_json(const RunState& s);
 
-/// Throws std::runtime_error naming what is missing or malformed.
+/// Reads a checkpoint strictly: every field's type and range, and its agreement with the rest of the
+/// checkpoint (the history counts the generations and evaluations, best_so_far is the lowest best);
+/// throws StateError naming the field. check_resumed_state checks it against the config.
 RunState checkpoint_from_json(const nlohmann::json& j);
 
-/// Reads DIR/checkpoint.json; throws ConfigError when it is missing or unreadable.
+/// Reads DIR/checkpoint.json; throws ConfigError naming the file (and the field) when it is
+/// missing, not JSON or not a checkpoint that reads back.
 RunState read_checkpoint(const std::string& path);
 
 }  // namespace swarmpath::evolve

@@ -11,6 +11,7 @@
 #include "evolve/optim/nsga2.hpp"
 #include "evolve/pareto_report.hpp"
 #include "evolve/report.hpp"
+#include "evolve/resume_check.hpp"
 #include "evolve/seeds.hpp"
 #include "evolve/stopwatch.hpp"
 
@@ -132,7 +133,6 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
       c.optimizer, c.genome.bounds(), encode(c.genome, c.genome.base), kinds.size(), optimizer_seed(c.seed));
   const std::optional<FolderLock> lock = lock_run_folder(c, o);
   RunState st = starting_state(c, o, [&](const nlohmann::json& j) { opt->restore(j); });
-  if (files && !st.history.empty()) write_progress(c, st, o.out_dir);  // in step with the checkpoint
   std::unique_ptr<BatchEvaluator> own_evaluator;
   BatchEvaluator& evaluator = evaluator_of(o, own_evaluator);
 
@@ -140,6 +140,8 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
   result.settings = f.settings();
   const bool fixed = c.evaluation.fixed_seeds;
   result.cases = first_cases(c, result.settings);
+  if (o.resume) check_resumed_state(c, st, result.cases.size(), opt->population().size(), checkpoint_path(o));
+  if (files && !st.history.empty()) write_progress(c, st, o.out_dir);  // in step with the checkpoint
 
   const RunClock clock(st.seconds, o.wall_time);
   std::string reason;

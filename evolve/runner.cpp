@@ -9,6 +9,7 @@
 #include <stdexcept>
 
 #include "evolve/report.hpp"
+#include "evolve/resume_check.hpp"
 #include "evolve/run_folder.hpp"
 #include "evolve/seeds.hpp"
 #include "evolve/stopwatch.hpp"
@@ -61,13 +62,17 @@ RunState resumed_state(const EvolveConfig& c, const std::string& checkpoint) {
   RunState st = read_checkpoint(checkpoint);
   const std::string hash = config_hash(c);
   if (st.config_hash != hash) {
-    throw sim::ConfigError(c.file, 0, "",
-                           checkpoint + " was written by a different config (hash " + st.config_hash +
-                               ", this config hashes to " + hash +
+    throw sim::ConfigError(checkpoint, 0, "config_hash",
+                           "written by a different config (hash " + st.config_hash + "; " + c.file +
+                               " hashes to " + hash +
                                "): resume with the config that started the run (only its [budget] may "
                                "change), or start a new run in another --out folder");
   }
   return st;
+}
+
+std::string checkpoint_path(const RunOptions& o) {
+  return (fs::path(o.out_dir) / "checkpoint.json").string();
 }
 
 std::optional<FolderLock> lock_run_folder(const EvolveConfig& c, const RunOptions& o) {
@@ -90,7 +95,16 @@ RunState starting_state(const EvolveConfig& c, const RunOptions& o,
     if (!files) throw std::invalid_argument("resuming needs the output folder of the run");
     const std::string checkpoint = (fs::path(o.out_dir) / "checkpoint.json").string();
     st = resumed_state(c, checkpoint);
-    restore(st.optimizer);
+    try {
+      restore(st.optimizer);
+    } catch (const StateError& e) {
+      throw sim::ConfigError(checkpoint, 0, "optimizer." + e.field(),
+                             e.message() + " (the checkpoint was damaged or edited: cannot resume)");
+    } catch (const std::invalid_argument& e) {
+      throw sim::ConfigError(checkpoint, 0, "optimizer", std::string(e.what()) + " (cannot resume)");
+    } catch (const nlohmann::json::exception& e) {
+      throw sim::ConfigError(checkpoint, 0, "optimizer", std::string(e.what()) + " (cannot resume)");
+    }
     if (o.note) {
       o.note("resuming " + checkpoint + " after generation " + std::to_string(st.generation) + " (" +
              std::to_string(st.evaluations) + " evaluations)");
@@ -254,7 +268,6 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
       factory(c.optimizer, c.genome.bounds(), encode(c.genome, c.genome.base), optimizer_seed(c.seed));
   const std::optional<FolderLock> lock = lock_run_folder(c, o);
   RunState st = starting_state(c, o, [&](const nlohmann::json& j) { opt->restore(j); });
-  if (files && !st.history.empty()) write_progress_files(c, st, o.out_dir);  // in step with the checkpoint
   std::unique_ptr<BatchEvaluator> own_evaluator;
   BatchEvaluator& evaluator = evaluator_of(o, own_evaluator);
 
@@ -262,6 +275,8 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   result.settings = f.settings();
   const bool fixed = c.evaluation.fixed_seeds;
   result.cases = first_cases(c, result.settings);
+  if (o.resume) check_resumed_state(c, st, result.cases.size(), 0, checkpoint_path(o));
+  if (files && !st.history.empty()) write_progress_files(c, st, o.out_dir);  // in step with the checkpoint
 
   const RunClock clock(st.seconds, o.wall_time);
   const auto stop_reason = [&] { return budget_stop(budget, st, clock.elapsed(), opt->done()); };

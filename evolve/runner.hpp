@@ -74,6 +74,9 @@ Budget effective_budget(const EvolveConfig& c, const std::optional<int>& generat
 /// (a ConfigError names both hashes when another config wrote it).
 RunState resumed_state(const EvolveConfig& c, const std::string& checkpoint);
 
+/// options.out_dir/checkpoint.json
+std::string checkpoint_path(const RunOptions& options);
+
 /// Locks options.out_dir for the whole run (FolderLock; none without an out_dir); throws
 /// sim::ConfigError naming the holder when another run writes there.
 std::optional<FolderLock> lock_run_folder(const EvolveConfig& c, const RunOptions& options);

@@ -13,6 +13,7 @@
 
 #include "evolve/optim/optimizer.hpp"
 #include "evolve/optim/state_json.hpp"
+#include "evolve/optim/state_reader.hpp"
 
 namespace swarmpath::evolve {
 
@@ -50,8 +51,15 @@ struct BestSoFar {
 
   nlohmann::json to_json() const { return {{"x", vector_to_json(x)}, {"f", number_to_json(f)}}; }
 
-  static BestSoFar from_json(const nlohmann::json& j) {
-    return {vector_from_json(j.at("x")), number_from_json(j.at("f"))};
+  /// Read strictly: x empty (nothing told yet, f = inf) or a point inside `b`.
+  static BestSoFar from_state(const StateReader& r, const Bounds& b) {
+    const StateReader best = r.object("best");
+    const double f = best.extended("f", -StateReader::kInf, StateReader::kInf);
+    if (best.at("x").is_array() && best.at("x").empty()) {
+      if (f != StateReader::kInf) best.fail("f", "no point told yet, so the best value must be inf");
+      return {{}, f};
+    }
+    return {best.point("x", b), f};
   }
 };
 

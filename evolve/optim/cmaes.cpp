@@ -31,28 +31,6 @@ nlohmann::json matrix_to_json(const Eigen::MatrixXd& m) {
   return j;
 }
 
-Eigen::MatrixXd matrix_from_json(const nlohmann::json& j, std::size_t n) {
-  if (j.size() != n) {
-    throw std::invalid_argument("cmaes state: covariance matrix is not " + std::to_string(n) + "x" +
-                                std::to_string(n));
-  }
-  Eigen::MatrixXd m(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
-  for (std::size_t r = 0; r < n; ++r) {
-    const Vector row = vector_from_json(j[r]);
-    if (row.size() != n) throw std::invalid_argument("cmaes state: covariance row of wrong length");
-    m.row(static_cast<Eigen::Index>(r)) = to_eigen(row).transpose();
-  }
-  return m;
-}
-
-Eigen::VectorXd vector_from_state(const nlohmann::json& j, std::size_t n, const char* what) {
-  const Vector v = vector_from_json(j);
-  if (v.size() != n) {
-    throw std::invalid_argument(std::string("cmaes state: '") + what + "' has the wrong length");
-  }
-  return to_eigen(v);
-}
-
 double range_of(const std::vector<double>& v) {
   if (v.empty()) return std::numeric_limits<double>::infinity();
   const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
@@ -99,6 +77,7 @@ Cmaes::Cmaes(const OptimizerSettings& s, const Bounds& b, const Vector& x0, std:
       n_(b.dim()),
       sigma0_(s.sigma0),
       max_restarts_(s.ipop_restarts),
+      lambda0_(0),
       tolx_(kTolXFactor * s.sigma0),
       rng_(seed) {
   if (s.population < 0 || s.population == 1) {
@@ -112,8 +91,8 @@ Cmaes::Cmaes(const OptimizerSettings& s, const Bounds& b, const Vector& x0, std:
   if (s.ipop_restarts < 0) {
     throw std::invalid_argument("cmaes: ipop_restarts must be >= 0, got " + std::to_string(s.ipop_restarts));
   }
-  const std::size_t lambda = s.population > 0 ? static_cast<std::size_t>(s.population) : default_lambda(n_);
-  start_run(to_eigen(box_.to_unit(x0)), lambda);
+  lambda0_ = s.population > 0 ? static_cast<std::size_t>(s.population) : default_lambda(n_);
+  start_run(to_eigen(box_.to_unit(x0)), lambda0_);
 }
 
 void Cmaes::start_run(const Eigen::VectorXd& mean, std::size_t lambda) {
@@ -271,28 +250,70 @@ nlohmann::json Cmaes::state() const {
 }
 
 void Cmaes::restore(const nlohmann::json& state) {
-  check_state_header(state, name(), n_);
-  rng_from_json(state.at("rng"), rng_);
-  const auto lambda = state.at("lambda").get<std::size_t>();
-  if (lambda < 2) throw std::invalid_argument("cmaes state: lambda < 2");
-  k_ = CmaesConstants::make(n_, lambda);
-  mean_ = vector_from_state(state.at("mean"), n_, "mean");
-  sigma_ = number_from_json(state.at("sigma"));
-  cov_ = matrix_from_json(state.at("cov"), n_);
-  pc_ = vector_from_state(state.at("pc"), n_, "pc");
-  ps_ = vector_from_state(state.at("ps"), n_, "ps");
-  generation_ = state.at("generation").get<long>();
-  best_history_ = vector_from_json(state.at("best_history"));
-  last_fitness_ = vector_from_json(state.at("last_fitness"));
-  restarts_ = state.at("restarts").get<int>();
-  done_ = state.at("done").get<bool>();
-  stop_reason_ = state.at("stop_reason").get<std::string>();
-  asked_unit_ = vectors_from_json(state.at("asked_unit"));
-  asked_repaired_ = state.at("asked_repaired").get<std::vector<bool>>();
-  if (asked_repaired_.size() != asked_unit_.size()) {
-    throw std::invalid_argument("cmaes state: 'asked_repaired' and 'asked_unit' differ in length");
+  // every field is checked before anything changes (StateError names the field)
+  const StateReader r(state, "");
+  r.header(name(), n_);
+  const sim::Rng::State rng = r.rng("rng");
+  const auto restarts = static_cast<int>(r.integer("restarts", 0, max_restarts_));
+  const auto lambda =
+      static_cast<std::size_t>(r.integer("lambda", 2, std::numeric_limits<std::int32_t>::max()));
+  if (lambda != lambda0_ << restarts) {
+    r.fail("lambda", "expected " + std::to_string(lambda0_ << restarts) + " (population " +
+                         std::to_string(lambda0_) + ", doubled at each of " + std::to_string(restarts) +
+                         " IPOP restarts), got " + std::to_string(lambda));
   }
-  best_ = BestSoFar::from_json(state.at("best"));
+  constexpr double kInf = StateReader::kInf;
+  const Vector mean = r.numbers("mean", n_, -kInf, kInf);
+  const double sigma = r.number("sigma", std::numeric_limits<double>::min(), kInf);
+  const std::vector<Vector> cov_rows = r.vectors("cov", n_, n_, -kInf, kInf);
+  Eigen::MatrixXd cov(static_cast<Eigen::Index>(n_), static_cast<Eigen::Index>(n_));
+  for (std::size_t i = 0; i < n_; ++i)
+    cov.row(static_cast<Eigen::Index>(i)) = to_eigen(cov_rows[i]).transpose();
+  if (!cov.isApprox(cov.transpose(), 1e-12)) r.fail("cov", "the covariance matrix must be symmetric");
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(cov, Eigen::EigenvaluesOnly);
+  if (eig.info() != Eigen::Success || !(eig.eigenvalues().minCoeff() > 0.0)) {
+    r.fail("cov", "the covariance matrix must be positive definite");
+  }
+  const Vector pc = r.numbers("pc", n_, -kInf, kInf);
+  const Vector ps = r.numbers("ps", n_, -kInf, kInf);
+  const long generation = r.integer("generation", 0, std::numeric_limits<std::int32_t>::max());
+  const Vector best_history = r.numbers("best_history", StateReader::kAny, -kInf, kInf, /*extended=*/true);
+  if (best_history.size() > tolfun_history_length(n_, lambda)) {
+    r.fail("best_history", "holds more generations than tolfun compares (" +
+                               std::to_string(tolfun_history_length(n_, lambda)) + ")");
+  }
+  const Vector last_fitness = r.numbers("last_fitness", StateReader::kAny, -kInf, kInf, /*extended=*/true);
+  if (!last_fitness.empty() && last_fitness.size() != lambda) {
+    r.fail("last_fitness",
+           "expected 0 or " + std::to_string(lambda) + " values, got " + std::to_string(last_fitness.size()));
+  }
+  const bool done = r.boolean("done");
+  const std::string stop_reason = r.text("stop_reason");
+  const Bounds unit{Vector(n_, 0.0), Vector(n_, 1.0)};
+  std::vector<Vector> asked_unit = r.points("asked_unit", StateReader::kAny, unit);
+  if (!asked_unit.empty() && asked_unit.size() != lambda) {
+    r.fail("asked_unit",
+           "expected 0 or " + std::to_string(lambda) + " points, got " + std::to_string(asked_unit.size()));
+  }
+  std::vector<bool> asked_repaired = r.booleans("asked_repaired", asked_unit.size());
+  const BestSoFar best = BestSoFar::from_state(r, box_.bounds());
+
+  rng_.set_state(rng);
+  restarts_ = restarts;
+  k_ = CmaesConstants::make(n_, lambda);
+  mean_ = to_eigen(mean);
+  sigma_ = sigma;
+  cov_ = cov;
+  pc_ = to_eigen(pc);
+  ps_ = to_eigen(ps);
+  generation_ = generation;
+  best_history_ = best_history;
+  last_fitness_ = last_fitness;
+  done_ = done;
+  stop_reason_ = stop_reason;
+  asked_unit_ = std::move(asked_unit);
+  asked_repaired_ = std::move(asked_repaired);
+  best_ = best;
   decompose();
 }
 

@@ -72,6 +72,7 @@ class Cmaes final : public Optimizer {
   std::size_t n_;
   double sigma0_;
   int max_restarts_;
+  std::size_t lambda0_;  ///< the first run's population (IPOP doubles it at each restart)
   double tolx_;
 
   // the run's state (serialised)

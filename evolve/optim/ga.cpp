@@ -126,16 +126,30 @@ nlohmann::json GeneticAlgorithm::state() const {
 }
 
 void GeneticAlgorithm::restore(const nlohmann::json& state) {
-  check_state_header(state, name(), box_.dim());
-  rng_from_json(state.at("rng"), rng_);
-  population_ = vectors_from_json(state.at("population"));
-  fitness_ = vector_from_json(state.at("fitness"));
-  asked_unit_ = vectors_from_json(state.at("asked_unit"));
-  asked_ = vectors_from_json(state.at("asked"));
-  best_ = BestSoFar::from_json(state.at("best"));
-  if (population_.size() != fitness_.size() || asked_.size() != asked_unit_.size()) {
-    throw std::invalid_argument("ga state: population/fitness or asked sizes differ");
+  // every field is checked before anything changes (StateError names the field)
+  const StateReader r(state, "");
+  const std::size_t n = box_.dim();
+  r.header(name(), n);
+  const sim::Rng::State rng = r.rng("rng");
+  const Bounds unit{Vector(n, 0.0), Vector(n, 1.0)};
+  // before the first tell no population, after it always `size_` members
+  const bool started = r.at("population").is_array() && !r.at("population").empty();
+  std::vector<Vector> population = r.points("population", started ? size_ : 0, unit);
+  Vector fitness = r.numbers("fitness", population.size(), -StateReader::kInf, StateReader::kInf, true);
+  std::vector<Vector> asked_unit = r.points("asked_unit", StateReader::kAny, unit);
+  const std::size_t batch = started ? size_ - elites_ : size_;
+  if (!asked_unit.empty() && asked_unit.size() != batch) {
+    r.fail("asked_unit",
+           "expected 0 or " + std::to_string(batch) + " points, got " + std::to_string(asked_unit.size()));
   }
+  std::vector<Vector> asked = r.points("asked", asked_unit.size(), box_.bounds());
+  const BestSoFar best = BestSoFar::from_state(r, box_.bounds());
+  rng_.set_state(rng);
+  population_ = std::move(population);
+  fitness_ = std::move(fitness);
+  asked_unit_ = std::move(asked_unit);
+  asked_ = std::move(asked);
+  best_ = best;
 }
 
 }  // namespace swarmpath::evolve

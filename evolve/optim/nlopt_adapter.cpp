@@ -196,18 +196,23 @@ nlohmann::json NloptAdapter::state() const {
 }
 
 void NloptAdapter::restore(const nlohmann::json& state) {
-  check_state_header(state, name(), box_.dim());
-  seed_ = state.at("seed").get<std::uint64_t>();
-  history_.clear();
-  for (const auto& t : state.at("history")) {
-    Told told{vector_from_json(t.at("x")), number_from_json(t.at("f"))};
-    if (told.x.size() != box_.dim())
-      throw std::invalid_argument(name() + " state: history point of wrong dimension");
-    history_.push_back(std::move(told));
+  // every field is checked before anything changes (StateError names the field)
+  const StateReader r(state, "");
+  const std::size_t n = box_.dim();
+  r.header(name(), n);
+  const std::uint64_t seed = r.word("seed");
+  const Bounds unit{Vector(n, 0.0), Vector(n, 1.0)};
+  std::vector<Told> history;
+  for (const StateReader& t : r.objects("history")) {
+    history.push_back({t.point("x", unit), t.extended("f", -StateReader::kInf, StateReader::kInf)});
   }
-  best_ = BestSoFar::from_json(state.at("best"));
+  const BestSoFar best = BestSoFar::from_state(r, box_.bounds());
+  const bool asked = r.boolean("asked");
+  seed_ = seed;
+  history_ = std::move(history);
+  best_ = best;
   replay();
-  asked_ = state.at("asked").get<bool>() && !done_;
+  asked_ = asked && !done_;
 }
 
 }  // namespace swarmpath::evolve

@@ -12,6 +12,7 @@
 
 #include "evolve/optim/hypervolume.hpp"
 #include "evolve/optim/state_json.hpp"
+#include "evolve/optim/state_reader.hpp"
 #include "evolve/optim/variation.hpp"
 
 namespace swarmpath::evolve {
@@ -261,30 +262,31 @@ nlohmann::json Nsga2::state() const {
 }
 
 void Nsga2::restore(const nlohmann::json& state) {
-  check_state_header(state, name(), box_.dim());
-  const auto m = state.at("n_objectives").get<std::size_t>();
+  // every field is checked before anything changes (StateError names the field)
+  const StateReader r(state, "");
+  const std::size_t dim = box_.dim();
+  r.header(name(), dim);
+  const auto m = static_cast<std::size_t>(r.integer("n_objectives", 1, 64));
   if (m != n_objectives_) {
-    throw std::invalid_argument("nsga2 state has " + std::to_string(m) + " objectives, not " +
-                                std::to_string(n_objectives_));
+    r.fail("n_objectives",
+           "the state has " + std::to_string(m) + " objectives, the run " + std::to_string(n_objectives_));
   }
-  sim::Rng rng;
-  rng_from_json(state.at("rng"), rng);
-  auto population = vectors_from_json(state.at("population"));
-  auto population_x = vectors_from_json(state.at("population_x"));
-  auto objectives = vectors_from_json(state.at("objectives"));
-  auto violation = vector_from_json(state.at("violation"));
-  auto asked_unit = vectors_from_json(state.at("asked_unit"));
-  auto asked = vectors_from_json(state.at("asked"));
-  const std::size_t n = population.size();
-  if (population_x.size() != n || objectives.size() != n || violation.size() != n ||
-      asked.size() != asked_unit.size()) {
-    throw std::invalid_argument("nsga2 state: population, objectives, violation or asked sizes differ");
+  const sim::Rng::State rng = r.rng("rng");
+  const Bounds unit{Vector(dim, 0.0), Vector(dim, 1.0)};
+  // before the first tell no population, after it always `size_` members
+  const bool started = r.at("population").is_array() && !r.at("population").empty();
+  const std::size_t n = started ? size_ : 0;
+  auto population = r.points("population", n, unit);
+  auto population_x = r.points("population_x", n, box_.bounds());
+  auto objectives = r.vectors("objectives", n, m, -StateReader::kInf, StateReader::kInf, true);
+  auto violation = r.numbers("violation", n, 0.0, StateReader::kInf, true);
+  auto asked_unit = r.points("asked_unit", StateReader::kAny, unit);
+  if (!asked_unit.empty() && asked_unit.size() != size_) {
+    r.fail("asked_unit",
+           "expected 0 or " + std::to_string(size_) + " points, got " + std::to_string(asked_unit.size()));
   }
-  for (const auto& f : objectives) {
-    if (f.size() != n_objectives_)
-      throw std::invalid_argument("nsga2 state: an objective vector has the wrong size");
-  }
-  rng_ = rng;
+  auto asked = r.points("asked", asked_unit.size(), box_.bounds());
+  rng_.set_state(rng);
   population_ = std::move(population);
   population_x_ = std::move(population_x);
   objectives_ = std::move(objectives);

@@ -45,11 +45,21 @@ nlohmann::json RandomSearch::state() const {
 }
 
 void RandomSearch::restore(const nlohmann::json& state) {
-  check_state_header(state, name(), box_.dim());
-  rng_from_json(state.at("rng"), rng_);
-  started_ = state.at("started").get<bool>();
-  asked_ = vectors_from_json(state.at("asked"));
-  best_ = BestSoFar::from_json(state.at("best"));
+  // every field is checked before anything changes (StateError names the field)
+  const StateReader r(state, "");
+  r.header(name(), box_.dim());
+  const sim::Rng::State rng = r.rng("rng");
+  const bool started = r.boolean("started");
+  std::vector<Vector> asked = r.points("asked", StateReader::kAny, box_.bounds());
+  if (!asked.empty() && asked.size() != population_) {
+    r.fail("asked",
+           "expected 0 or " + std::to_string(population_) + " points, got " + std::to_string(asked.size()));
+  }
+  const BestSoFar best = BestSoFar::from_state(r, box_.bounds());
+  rng_.set_state(rng);
+  started_ = started;
+  asked_ = std::move(asked);
+  best_ = best;
 }
 
 }  // namespace swarmpath::evolve

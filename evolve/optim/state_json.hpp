@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
 // JSON pieces shared by the optimisers' state(): exact doubles (nlohmann-json prints 17
 // significant digits, so finite values round-trip bit for bit; JSON has no inf or NaN, so
-// those are written as strings), the random generator's four words, and a header check.
+// those are written as strings), the random generator's four words, and the header. Reading a state back is
+// StateReader's (state_reader.hpp): strict, field by field.
 #pragma once
 
 #include <cmath>
@@ -39,24 +40,10 @@ inline nlohmann::json vector_to_json(const Vector& v) {
   return j;
 }
 
-inline Vector vector_from_json(const nlohmann::json& j) {
-  Vector v;
-  v.reserve(j.size());
-  for (const auto& x : j) v.push_back(number_from_json(x));
-  return v;
-}
-
 inline nlohmann::json vectors_to_json(const std::vector<Vector>& vs) {
   auto j = nlohmann::json::array();
   for (const auto& v : vs) j.push_back(vector_to_json(v));
   return j;
-}
-
-inline std::vector<Vector> vectors_from_json(const nlohmann::json& j) {
-  std::vector<Vector> vs;
-  vs.reserve(j.size());
-  for (const auto& v : j) vs.push_back(vector_from_json(v));
-  return vs;
 }
 
 /// The four xoshiro256** words as unsigned JSON integers (exact in nlohmann-json).
@@ -64,19 +51,10 @@ inline nlohmann::json rng_to_json(const sim::Rng& rng) { return rng.state(); }
 
 inline void rng_from_json(const nlohmann::json& j, sim::Rng& rng) { rng.set_state(j.get<sim::Rng::State>()); }
 
-/// Every state starts with the optimiser's name and dimension; restore() checks them.
+/// Every state starts with the optimiser's name and dimension; restore() checks them
+/// (StateReader::header).
 inline nlohmann::json state_header(const std::string& name, std::size_t dim) {
   return {{"optimizer", name}, {"dim", dim}};
-}
-
-inline void check_state_header(const nlohmann::json& state, const std::string& name, std::size_t dim) {
-  const auto got = state.at("optimizer").get<std::string>();
-  if (got != name) throw std::invalid_argument("optimizer state is for '" + got + "', not '" + name + "'");
-  const auto got_dim = state.at("dim").get<std::size_t>();
-  if (got_dim != dim) {
-    throw std::invalid_argument("optimizer state has dimension " + std::to_string(got_dim) + ", not " +
-                                std::to_string(dim));
-  }
 }
 
 }  // namespace swarmpath::evolve
