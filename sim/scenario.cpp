@@ -3,9 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 
 #include "config_error.hpp"
+#include "reachability.hpp"
 #include "robot_model.hpp"
 #include "toml_reader.hpp"
 
@@ -54,9 +56,9 @@ Aabb interior(const Scenario& s) {
   return {{a.lo.x + t, a.lo.y + t}, {a.hi.x - t, a.hi.y - t}};
 }
 
-std::string fmt(double v) {
+std::string fmt(double v, int digits = 6) {
   std::ostringstream o;
-  o << v;
+  o << std::setprecision(digits) << v;
   return o.str();
 }
 
@@ -89,6 +91,14 @@ void check_point(const Scenario& s, const TableReader& root, std::string_view ke
   for (std::size_t i = 0; i < shapes.size(); ++i) {
     if (signed_distance(shapes[i], p) <= 0.0) {
       root.fail(key, std::string(key) + " " + fmt(p) + " lies inside " + shape_names[i]);
+    }
+  }
+  // a robot's centre can come no closer to an obstacle than its radius
+  for (std::size_t i = 0; i < shapes.size(); ++i) {
+    if (signed_distance(shapes[i], p) < kRobotRadius) {
+      root.fail(key, std::string(key) + " " + fmt(p) + " lies within " + fmt(100.0 * kRobotRadius, 2) +
+                         " cm of " + shape_names[i] + ": no robot can reach it (a robot's radius is " +
+                         fmt(100.0 * kRobotRadius, 2) + " cm)");
     }
   }
 }
@@ -205,23 +215,30 @@ Scenario parse(const TomlDoc& doc) {
                "arena sides must be at most " + fmt(kMaxArenaSide) + " m (got " + fmt(s.arena_size) + ")");
   }
   s.wall_thickness = arena.number_or("wall_thickness", 0.1);
-  if (s.wall_thickness < 0.0 || s.wall_thickness >= 0.25 * std::min(s.arena_size.x, s.arena_size.y)) {
+  if (s.wall_thickness < kMinWallThickness) {
+    arena.fail("wall_thickness", "must be at least " + fmt(kMinWallThickness) + " m (got " +
+                                     fmt(s.wall_thickness) +
+                                     "): without boundary walls the robots leave the arena");
+  }
+  if (s.wall_thickness >= 0.25 * std::min(s.arena_size.x, s.arena_size.y)) {
     arena.fail("wall_thickness",
-               "must lie in [0, a quarter of the arena's shorter side) (got " + fmt(s.wall_thickness) + ")");
+               "must be less than a quarter of the arena's shorter side (got " + fmt(s.wall_thickness) + ")");
   }
   arena.finish();
 
   // obstacles
   const Aabb arena_box = s.arena_bounds();
   std::vector<std::string> names;  // for messages, in obstacle_shapes() order
-  for (const char* w : {"the north wall", "the south wall", "the east wall", "the west wall"}) {
-    if (s.wall_thickness > 0.0) names.emplace_back(w);
-  }
+  for (const char* w : {"the north wall", "the south wall", "the east wall", "the west wall"})
+    names.emplace_back(w);
   const std::vector<TableReader> boxes = root.table_array("box");
   const std::vector<TableReader> cylinders = root.table_array("cylinder");
   if (boxes.size() + cylinders.size() > kMaxObstacles) {
-    root.fail("box", "too many obstacles (" + std::to_string(boxes.size() + cylinders.size()) + " > " +
-                         std::to_string(kMaxObstacles) + ")");
+    // the table that takes the count past the limit
+    root.fail(boxes.size() > kMaxObstacles ? "box" : "cylinder",
+              "too many obstacles: " + std::to_string(boxes.size()) +
+                  (boxes.size() == 1 ? " box" : " boxes") + " and " + std::to_string(cylinders.size()) +
+                  " cylinders (at most " + std::to_string(kMaxObstacles) + " in all)");
   }
   for (const TableReader& b : boxes) {
     BoxObstacle box;
@@ -255,6 +272,11 @@ Scenario parse(const TomlDoc& doc) {
   s.goal = root.vec2("goal");
   check_point(s, root, "nest", s.nest, shapes, names);
   check_point(s, root, "goal", s.goal, shapes, names);
+  if (!robot_can_drive(s, s.nest, s.goal)) {
+    root.fail("goal", "no robot can drive from the nest " + fmt(s.nest) + " to the goal " + fmt(s.goal) +
+                          ": the obstacles and walls close every way (a robot is " +
+                          fmt(200.0 * kRobotRadius, 3) + " cm wide)");
+  }
   if (dist(s.nest, s.goal) < 2.0 * kRobotRadius) root.fail("goal", "goal and nest coincide");
 
   // simulation settings
@@ -278,6 +300,17 @@ Scenario parse(const TomlDoc& doc) {
     s.sim.stop_when_complete = sim->boolean_or("stop_when_complete", true);
     s.sim.grid_cell = sim->number_or("grid_cell", 1.0);
     require_range(*sim, "grid_cell", s.sim.grid_cell, 0.1, 10.0);
+    // the neighbour grids hold a list per cell: their size is the product, not either factor
+    const double cells = std::ceil(s.arena_size.x / s.sim.grid_cell - 1e-9) *
+                         std::ceil(s.arena_size.y / s.sim.grid_cell - 1e-9);
+    if (cells > static_cast<double>(kMaxGridCells)) {
+      const double least = std::sqrt(s.arena_size.x * s.arena_size.y / static_cast<double>(kMaxGridCells));
+      sim->fail("grid_cell", fmt(s.sim.grid_cell) + " m cells over the " + fmt(s.arena_size.x) + " x " +
+                                 fmt(s.arena_size.y) + " m arena (arena.size) make " + fmt(cells, 15) +
+                                 " neighbour-grid cells (limit " + std::to_string(kMaxGridCells) +
+                                 "): use grid_cell >= " + fmt(std::ceil(least * 100.0) / 100.0) +
+                                 " m or a smaller arena");
+    }
     const Vec2 regions = sim->vec2_or("physics_regions", {1.0, 1.0});
     for (const double r : {regions.x, regions.y}) {
       if (r != std::floor(r) || r < 1.0 || r > kMaxPhysicsRegions) {

@@ -70,7 +70,7 @@ struct Scenario {
   EnvClass env_class = EnvClass::kOpen;
 
   Vec2 arena_size{24.0, 14.0};  ///< centred at the origin [m]
-  double wall_thickness = 0.1;  ///< boundary walls inside the arena edge; 0 = none [m]
+  double wall_thickness = 0.1;  ///< boundary walls inside the arena edge, >= kMinWallThickness [m]
   std::vector<BoxObstacle> boxes;
   std::vector<CylinderObstacle> cylinders;
 
@@ -93,7 +93,9 @@ inline constexpr int kMaxRobots = 100000;
 inline constexpr std::int64_t kMaxTicks = 10000000;
 inline constexpr double kMaxArenaSide = 2000.0;  // [m]
 inline constexpr std::size_t kMaxObstacles = 200000;
-inline constexpr int kMaxPhysicsRegions = 16;  // per axis (each Box2D world holds a 100 KiB stack)
+inline constexpr int kMaxPhysicsRegions = 16;             // per axis (each Box2D world holds a 100 KiB stack)
+inline constexpr std::int64_t kMaxGridCells = 4'000'000;  // arena cells of the neighbour grid (~130 MB)
+inline constexpr double kMinWallThickness = 0.01;         // [m]: the boundary walls are never removed
 
 /// Loads and validates a scenario file. Throws ConfigError ("file:line: key: message").
 Scenario load_scenario(const std::string& path);

@@ -3,10 +3,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
 #include <toml++/toml.h>
+
+#include "edit_distance.hpp"
 
 namespace swarmpath::sim {
 
@@ -38,22 +42,6 @@ std::string type_name(const toml::node& n) {
   return "nothing";
 }
 
-// Levenshtein distance, for "did you mean" hints on unknown keys.
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diag = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      const std::size_t up = row[j];
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
-      diag = up;
-    }
-  }
-  return row[b.size()];
-}
-
 }  // namespace
 
 TomlDoc::TomlDoc(std::unique_ptr<toml::table> root, std::string name)
@@ -64,10 +52,13 @@ TomlDoc& TomlDoc::operator=(TomlDoc&&) noexcept = default;
 TomlDoc::~TomlDoc() = default;
 
 TomlDoc TomlDoc::parse_file(const std::string& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw ConfigError(path, 0, "", "is a folder, not a file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw ConfigError(path, 0, "", "cannot open file");
   std::ostringstream text;
   text << in.rdbuf();
+  if (in.bad()) throw ConfigError(path, 0, "", "cannot read the file");
   return parse_string(text.str(), path);
 }
 
@@ -171,8 +162,24 @@ bool TableReader::boolean_or(std::string_view key, bool fallback) const {
 
 std::string TableReader::string(std::string_view key) const {
   const toml::node& n = require(key);
-  if (const auto* s = n.as_string()) return s->get();
+  if (const auto* s = n.as_string()) return checked_text(key, n, s->get());
   throw ConfigError(doc_->name(), line_of_node(n), path(key), "expected a string, got " + type_name(n));
+}
+
+std::string TableReader::checked_text(std::string_view key, const toml::node& n,
+                                      const std::string& text) const {
+  // names and paths end up in SVG, XML, CSV and terminals, where control characters break them
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c == 0x7f) {
+      char code[8];
+      std::snprintf(code, sizeof code, "U+%04X", c);
+      throw ConfigError(doc_->name(), line_of_node(n), path(key),
+                        std::string("contains the control character ") + code +
+                            " (names and paths may not hold control characters)");
+    }
+  }
+  return text;
 }
 
 std::string TableReader::string_or(std::string_view key, std::string fallback) const {
@@ -219,7 +226,7 @@ std::vector<std::string> TableReader::strings(std::string_view key) const {
     if (s == nullptr) {
       throw ConfigError(doc_->name(), line_of_node(e), path(key), "expected a string, got " + type_name(e));
     }
-    out.push_back(s->get());
+    out.push_back(checked_text(key, e, s->get()));
   }
   return out;
 }

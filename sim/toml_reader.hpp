@@ -97,6 +97,7 @@ class TableReader {
   const toml::node* get(std::string_view key) const;
   const toml::node& require(std::string_view key) const;
   double as_number(std::string_view key, const toml::node& n) const;
+  std::string checked_text(std::string_view key, const toml::node& n, const std::string& text) const;
 
   const TomlDoc* doc_;
   const toml::table* table_;
