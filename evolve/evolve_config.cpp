@@ -10,9 +10,11 @@
 
 #include "evolve/optim/multi_objective.hpp"
 #include "evolve/params_export.hpp"
+#include "evolve/path_collision.hpp"
 #include "sim/config_error.hpp"
 #include "sim/hash.hpp"
 #include "sim/scenario.hpp"
+#include "sim/scenario_identity.hpp"
 #include "sim/toml_reader.hpp"
 
 namespace swarmpath::evolve {
@@ -47,11 +49,36 @@ ScenarioRef scenario_ref(const TableReader& t, std::string_view key, const std::
   return {written, *path, file_hash(*path)};
 }
 
+// each file once (a file listed twice would count twice in every candidate's mean)
 std::vector<ScenarioRef> scenario_list(const TableReader& t, std::string_view key,
                                        const std::string& base_dir) {
   std::vector<ScenarioRef> out;
-  for (const std::string& w : t.strings(key)) out.push_back(scenario_ref(t, key, w, base_dir));
+  for (const std::string& w : t.strings(key)) {
+    ScenarioRef ref = scenario_ref(t, key, w, base_dir);
+    for (const ScenarioRef& o : out) {
+      if (same_file(o.path, ref.path))
+        t.fail(key, "\"" + o.written + "\" and \"" + w + "\" are one file, listed twice");
+    }
+    out.push_back(std::move(ref));
+  }
   return out;
+}
+
+// two entries of one list that load to the same experiment, or to one name, are refused too
+void check_distinct(const TableReader& t, std::string_view key, const std::vector<ScenarioRef>& refs,
+                    const std::vector<sim::Scenario>& loaded) {
+  for (std::size_t i = 0; i < loaded.size(); ++i) {
+    for (std::size_t k = 0; k < i; ++k) {
+      const std::string both = "\"" + refs[k].written + "\" and \"" + refs[i].written + "\"";
+      if (sim::experiment_fingerprint(loaded[k]) == sim::experiment_fingerprint(loaded[i])) {
+        t.fail(key,
+               both + " are the same scenario (the same arena, robots and settings): it would count twice");
+      }
+      if (loaded[k].name == loaded[i].name) {
+        t.fail(key, both + " are two scenarios named \"" + loaded[i].name + "\"; give one another name");
+      }
+    }
+  }
 }
 
 int int_in(const TableReader& t, std::string_view key, std::int64_t fallback, std::int64_t lo,
@@ -143,6 +170,9 @@ std::vector<int> robot_counts(const TableReader& t, std::string_view key) {
     if (n != std::floor(n) || n < 1 || n > sim::kMaxRobots) {
       t.fail(key, "robot counts must be whole numbers in [1, " + std::to_string(sim::kMaxRobots) + "]");
     }
+    if (std::find(out.begin(), out.end(), static_cast<int>(n)) != out.end()) {
+      t.fail(key, fmt(n) + " robots listed twice");  // each count would weigh twice in every mean
+    }
     out.push_back(static_cast<int>(n));
   }
   if (out.empty()) t.fail(key, "the evaluation set is empty: give at least one robot count");
@@ -223,15 +253,17 @@ void read_evaluation(EvolveConfig& c, const TableReader& root, const std::string
         "the evaluation set is empty: name at least one scenario file or an [[evaluation.family]] of arenas");
   }
   // every scenario must load and take every robot count
+  std::vector<sim::Scenario> loaded;
   for (const ScenarioRef& ref : e.scenarios) {
-    const sim::Scenario s = sim::load_scenario(ref.path);
-    refuse_benchmark_arena(t, "scenarios", ref, s);
+    loaded.push_back(sim::load_scenario(ref.path));
+    refuse_benchmark_arena(t, "scenarios", ref, loaded.back());
     for (const int n : e.robots) {
-      if (const std::string err = sim::check_robot_count(s, n); !err.empty()) {
+      if (const std::string err = sim::check_robot_count(loaded.back(), n); !err.empty()) {
         t.fail("robots", ref.written + ": " + err);
       }
     }
   }
+  check_distinct(t, "scenarios", e.scenarios, loaded);
 }
 
 void read_fitness(EvolveConfig& c, const TableReader& root) {
@@ -337,6 +369,8 @@ void read_optimizer(EvolveConfig& c, const TableReader& root) {
     } else {
       (void)make_optimizer(o, c.genome.bounds(), x0, 0);
     }
+  } catch (const SettingError& e) {
+    fail(e.key(), e.what());  // the setting's own key
   } catch (const std::invalid_argument& e) {
     fail("name", e.what());
   }
@@ -374,15 +408,25 @@ void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string
     t->allow("held_out");
   }
   t->finish();
+  std::vector<sim::Scenario> loaded;
   for (const ScenarioRef& ref : r.held_out) {
-    const sim::Scenario s = sim::load_scenario(ref.path);
-    refuse_benchmark_arena(*t, "held_out", ref, s);
+    loaded.push_back(sim::load_scenario(ref.path));
+    refuse_benchmark_arena(*t, "held_out", ref, loaded.back());
     for (const int n : c.evaluation.robots) {
-      if (const std::string err = sim::check_robot_count(s, n); !err.empty()) {
+      if (const std::string err = sim::check_robot_count(loaded.back(), n); !err.empty()) {
         t->fail("held_out", ref.written + ": " + err);
       }
     }
+    // held out means no candidate was trained on it
+    for (const ScenarioRef& trained : c.evaluation.scenarios) {
+      if (same_file(trained.path, ref.path) ||
+          sim::arena_fingerprint(sim::load_scenario(trained.path)) == sim::arena_fingerprint(loaded.back())) {
+        t->fail("held_out", "\"" + ref.written + "\" is also in evaluation.scenarios (\"" + trained.written +
+                                "\"): a held-out scenario is one no candidate was trained on");
+      }
+    }
   }
+  check_distinct(*t, "held_out", r.held_out, loaded);
 }
 
 EvolveConfig parse(const sim::TomlDoc& doc, const std::string& base_dir) {

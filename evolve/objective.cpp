@@ -7,6 +7,7 @@
 
 #include "evolve/seeds.hpp"
 #include "sim/astar.hpp"
+#include "sim/config_error.hpp"
 #include "sim/step.hpp"
 
 namespace swarmpath::evolve {
@@ -68,7 +69,14 @@ SwarmObjective::SwarmObjective(const EvolveConfig& c)
     sim::Scenario s = sim::load_scenario(ref.path);
     if (c.evaluation.max_ticks) s = sim::with_max_ticks(s, *c.evaluation.max_ticks, c.file);
     const sim::AStarResult a = sim::astar(s);
-    const double astar = a.found ? sim::to_tu(a.length_m) : std::numeric_limits<double>::quiet_NaN();
+    if (!a.found) {
+      // path / A* (the fitness's path term) would be undefined for every run
+      throw sim::ConfigError(ref.path, 0, "",
+                             "the A* baseline (SPEC 4.5: a 1 cm grid, cells within 8.5 cm of an obstacle "
+                             "blocked) finds no path from the nest to the goal: a passage is narrower than a "
+                             "robot");
+    }
+    const double astar = sim::to_tu(a.length_m);
     const std::vector<int> robots =
         c.evaluation.robots.empty() ? std::vector<int>{s.robots} : c.evaluation.robots;
     for (const int n : robots) {

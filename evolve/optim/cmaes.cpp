@@ -81,15 +81,16 @@ Cmaes::Cmaes(const OptimizerSettings& s, const Bounds& b, const Vector& x0, std:
       tolx_(kTolXFactor * s.sigma0),
       rng_(seed) {
   if (s.population < 0 || s.population == 1) {
-    throw std::invalid_argument("cmaes: population must be >= 2 (or 0 for 4 + floor(3 ln n)), got " +
-                                std::to_string(s.population));
+    throw SettingError("population", "cmaes: population must be >= 2 (or 0 for 4 + floor(3 ln n)), got " +
+                                         std::to_string(s.population));
   }
   if (!(s.sigma0 > 0.0 && s.sigma0 <= 1.0)) {
-    throw std::invalid_argument("cmaes: sigma0 must be in (0, 1] (a fraction of the bound width), got " +
-                                std::to_string(s.sigma0));
+    throw SettingError("sigma0", "cmaes: sigma0 must be in (0, 1] (a fraction of the bound width), got " +
+                                     std::to_string(s.sigma0));
   }
   if (s.ipop_restarts < 0) {
-    throw std::invalid_argument("cmaes: ipop_restarts must be >= 0, got " + std::to_string(s.ipop_restarts));
+    throw SettingError("ipop_restarts",
+                       "cmaes: ipop_restarts must be >= 0, got " + std::to_string(s.ipop_restarts));
   }
   lambda0_ = s.population > 0 ? static_cast<std::size_t>(s.population) : default_lambda(n_);
   start_run(to_eigen(box_.to_unit(x0)), lambda0_);

@@ -15,28 +15,29 @@ GeneticAlgorithm::GeneticAlgorithm(const OptimizerSettings& s, const Bounds& b, 
                                    std::uint64_t seed)
     : box_(b), x0_(x0), rng_(seed) {
   if (s.population < 0 || s.population == 1) {
-    throw std::invalid_argument("ga: population must be >= 2 (or 0 for the default " +
-                                std::to_string(kDefaultPopulation) + "), got " +
-                                std::to_string(s.population));
+    throw SettingError("population", "ga: population must be >= 2 (or 0 for the default " +
+                                         std::to_string(kDefaultPopulation) + "), got " +
+                                         std::to_string(s.population));
   }
   size_ = static_cast<std::size_t>(s.population > 0 ? s.population : kDefaultPopulation);
   if (!(s.crossover_rate >= 0.0 && s.crossover_rate <= 1.0)) {
-    throw std::invalid_argument("ga: crossover_rate must be in [0, 1], got " +
-                                std::to_string(s.crossover_rate));
+    throw SettingError("crossover_rate",
+                       "ga: crossover_rate must be in [0, 1], got " + std::to_string(s.crossover_rate));
   }
   if (!(s.mutation_sigma > 0.0 && std::isfinite(s.mutation_sigma))) {
-    throw std::invalid_argument("ga: mutation_sigma must be > 0, got " + std::to_string(s.mutation_sigma));
+    throw SettingError("mutation_sigma",
+                       "ga: mutation_sigma must be > 0, got " + std::to_string(s.mutation_sigma));
   }
   if (!(s.mutation_rate >= 0.0 && s.mutation_rate <= 1.0)) {
-    throw std::invalid_argument("ga: mutation_rate must be in [0, 1] (0: 1/n), got " +
-                                std::to_string(s.mutation_rate));
+    throw SettingError("mutation_rate", "ga: mutation_rate must be in [0, 1] (0: 1/n), got " +
+                                            std::to_string(s.mutation_rate));
   }
   if (s.tournament < 1) {
-    throw std::invalid_argument("ga: tournament must be >= 1, got " + std::to_string(s.tournament));
+    throw SettingError("tournament", "ga: tournament must be >= 1, got " + std::to_string(s.tournament));
   }
   if (s.elites < 0 || static_cast<std::size_t>(s.elites) >= size_) {
-    throw std::invalid_argument("ga: elites must be in [0, population - 1], got " + std::to_string(s.elites) +
-                                " with population " + std::to_string(size_));
+    throw SettingError("elites", "ga: elites must be in [0, population - 1], got " +
+                                     std::to_string(s.elites) + " with population " + std::to_string(size_));
   }
   crossover_rate_ = s.crossover_rate;
   mutation_sigma_ = s.mutation_sigma;

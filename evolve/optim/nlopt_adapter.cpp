@@ -97,28 +97,28 @@ NloptAdapter::NloptAdapter(const OptimizerSettings& s, const Bounds& b, const Ve
   const AlgorithmInfo& info = algorithm_info(algorithm_);
   const std::size_t n = b.dim();
   if (s.population < 0 || s.population == 1) {
-    throw std::invalid_argument(name() + ": population must be >= 2 (or 0 for NLopt's default), got " +
-                                std::to_string(s.population));
+    throw SettingError("population", name() + ": population must be >= 2 (or 0 for NLopt's default), got " +
+                                         std::to_string(s.population));
   }
   if (info.id == nlopt::GN_CRS2_LM && s.population > 0 && static_cast<std::size_t>(s.population) < n + 1) {
-    throw std::invalid_argument(name() + ": population must be >= n + 1 = " + std::to_string(n + 1) +
-                                ", got " + std::to_string(s.population));
+    throw SettingError("population", name() + ": population must be >= n + 1 = " + std::to_string(n + 1) +
+                                         ", got " + std::to_string(s.population));
   }
   // local and DIRECT algorithms have no population: the setting is ignored for them
   population_ = info.takes_population ? static_cast<unsigned>(s.population) : 0u;
   if (s.max_evaluations < 0) {
-    throw std::invalid_argument(name() + ": max_evaluations must be >= 0, got " +
-                                std::to_string(s.max_evaluations));
+    throw SettingError("max_evaluations",
+                       name() + ": max_evaluations must be >= 0, got " + std::to_string(s.max_evaluations));
   }
   max_evaluations_ =
       static_cast<unsigned>(s.max_evaluations > 0 ? s.max_evaluations : 200 * static_cast<int>(n + 1));
   if (!(s.xtol_rel >= 0.0 && std::isfinite(s.xtol_rel))) {
-    throw std::invalid_argument(name() + ": xtol_rel must be >= 0, got " + std::to_string(s.xtol_rel));
+    throw SettingError("xtol_rel", name() + ": xtol_rel must be >= 0, got " + std::to_string(s.xtol_rel));
   }
   xtol_rel_ = s.xtol_rel;
   if (!(s.sigma0 > 0.0 && s.sigma0 <= 1.0)) {
-    throw std::invalid_argument(name() + ": sigma0 (the initial step) must be in (0, 1], got " +
-                                std::to_string(s.sigma0));
+    throw SettingError(
+        "sigma0", name() + ": sigma0 (the initial step) must be in (0, 1], got " + std::to_string(s.sigma0));
   }
   initial_step_ = s.sigma0;
   replay();

@@ -99,18 +99,18 @@ Nsga2::Nsga2(const OptimizerSettings& s, const Bounds& b, const Vector& x0, std:
     throw std::invalid_argument("nsga2: needs at least 2 objectives, got " + std::to_string(n_objectives));
   }
   if (s.population < 0 || (s.population > 0 && (s.population < 4 || s.population % 2 != 0))) {
-    throw std::invalid_argument("nsga2: population must be even and >= 4 (or 0 for the default " +
-                                std::to_string(kDefaultPopulation) + "), got " +
-                                std::to_string(s.population));
+    throw SettingError("population", "nsga2: population must be even and >= 4 (or 0 for the default " +
+                                         std::to_string(kDefaultPopulation) + "), got " +
+                                         std::to_string(s.population));
   }
   size_ = static_cast<std::size_t>(s.population > 0 ? s.population : kDefaultPopulation);
   if (!(s.crossover_rate >= 0.0 && s.crossover_rate <= 1.0)) {
-    throw std::invalid_argument("nsga2: crossover_rate must be in [0, 1], got " +
-                                std::to_string(s.crossover_rate));
+    throw SettingError("crossover_rate",
+                       "nsga2: crossover_rate must be in [0, 1], got " + std::to_string(s.crossover_rate));
   }
   if (!(s.mutation_rate >= 0.0 && s.mutation_rate <= 1.0)) {
-    throw std::invalid_argument("nsga2: mutation_rate must be in [0, 1] (0: 1/n), got " +
-                                std::to_string(s.mutation_rate));
+    throw SettingError("mutation_rate", "nsga2: mutation_rate must be in [0, 1] (0: 1/n), got " +
+                                            std::to_string(s.mutation_rate));
   }
   crossover_rate_ = s.crossover_rate;
   mutation_rate_ = s.mutation_rate > 0.0 ? s.mutation_rate : 1.0 / static_cast<double>(b.dim());

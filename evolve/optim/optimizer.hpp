@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,19 @@ struct OptimizerSettings {
   int elites = 1;               ///< GA
   int max_evaluations = 0;      ///< NLopt: maxeval (0: 200 * (n + 1)); the others leave budgets to the caller
   double xtol_rel = 1e-8;       ///< NLopt: relative x tolerance, in the normalised [0,1]^n space
+};
+
+/// A bad optimiser setting: key() is its name in OptimizerSettings and in an evolve config's
+/// [optimizer] table ("elites"), so that the config's error can point at that key.
+class SettingError : public std::invalid_argument {
+ public:
+  SettingError(std::string key, const std::string& message)
+      : std::invalid_argument(message), key_(std::move(key)) {}
+
+  const std::string& key() const { return key_; }
+
+ private:
+  std::string key_;
 };
 
 /// Minimises f over Bounds by ask/tell.

@@ -8,9 +8,9 @@ namespace swarmpath::evolve {
 RandomSearch::RandomSearch(const OptimizerSettings& s, const Bounds& b, const Vector& x0, std::uint64_t seed)
     : box_(b), rng_(seed), x0_(x0) {
   if (s.population < 0 || s.population == 1) {
-    throw std::invalid_argument("random: population must be >= 2 (or 0 for the default " +
-                                std::to_string(kDefaultPopulation) + "), got " +
-                                std::to_string(s.population));
+    throw SettingError("population", "random: population must be >= 2 (or 0 for the default " +
+                                         std::to_string(kDefaultPopulation) + "), got " +
+                                         std::to_string(s.population));
   }
   population_ = static_cast<std::size_t>(s.population > 0 ? s.population : kDefaultPopulation);
 }
