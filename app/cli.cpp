@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "sim/config_error.hpp"
+#include "sim/edit_distance.hpp"
 #include "standard_output.hpp"
 
 namespace swarmpath::app {
@@ -101,6 +102,28 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
     CLI::App* c = app.add_subcommand(
         "report", "A tuning run (evolve's output folder) as one self-contained web page, with replays.");
     commands.push_back({c, add_report(*c)});
+  }
+
+  // an unknown command: named, with the nearest one (CLI11 would only say that one is required)
+  if (!args.empty() && !args[0].empty() && args[0][0] != '-') {
+    std::string nearest;
+    std::size_t best = 4;
+    bool known = false;
+    for (const Entry& c : commands) {
+      const std::string& name = c.cmd->get_name();
+      known = known || name == args[0];
+      const std::size_t d = sim::edit_distance(args[0], name);
+      if (d < best || (name.rfind(args[0], 0) == 0 && best > 1)) {
+        best = name.rfind(args[0], 0) == 0 ? 1 : d;
+        nearest = name;
+      }
+    }
+    if (!known) {
+      err << "error: unknown command '" << args[0] << "'"
+          << (nearest.empty() ? std::string() : " (did you mean '" + nearest + "'?)")
+          << "\nRun 'swarmpath --help' for the commands.\n";
+      return kExitBadInput;
+    }
   }
 
   // CLI11 wants argv order with the program name first and parses from the back

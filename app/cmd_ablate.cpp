@@ -7,14 +7,15 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
-#include <omp.h>
 
 #include "ablation.hpp"
 #include "cli.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/atomic_write.hpp"
@@ -40,7 +41,7 @@ struct AblateOptions {
   std::uint64_t seed_base = 1;
   std::vector<std::string> modes{"pf", "ta"};
   std::optional<std::int64_t> ticks;
-  int threads = 0;
+  std::optional<int> threads;
   std::string cache;
   std::string json;
   std::string markdown;
@@ -219,8 +220,8 @@ int run_ablate(const AblateOptions& o, const evolve::EvaluatorFactory& evaluator
   for (const int n : o.robots) grid_text << " " << n;
   grid_text << "\nseeds " << o.seeds << " from " << o.seed_base << "\nticks " << (o.ticks ? *o.ticks : -1)
             << "\n";
-  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
-  if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
+  check_seed_range("--seed-base", o.seed_base, o.seeds);
+  const int threads = threads_or_all(o.threads);
 
   // the configs: each arm's base, then each chosen addition off (default) or on (paper-literal)
   std::vector<Config> configs;
@@ -392,13 +393,13 @@ Runner add_ablate(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
       ->capture_default_str();
   app.add_option("--robots", o->robots, "Robot counts")->delimiter(',')->capture_default_str();
   app.add_option("--seeds", o->seeds, "Seeds per (scenario, robots) case")->capture_default_str();
-  app.add_option("--seed-base", o->seed_base, "The first seed")->capture_default_str();
+  add_seed_option(app, "--seed-base", o->seed_base, "The first seed");
   app.add_option("--modes", o->modes,
                  "pf, ta or both (an addition that acts only in task allocation runs in ta)")
       ->delimiter(',')
       ->capture_default_str();
   app.add_option("--ticks", o->ticks, "Override every scenario's max_ticks");
-  app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");
+  add_threads_option(app, o->threads);
   app.add_option("--cache", o->cache,
                  "Keep each controller's runs in this folder and reuse them (for a run in parts, or after a "
                  "kill); used only while this build's base runs equal the cached ones");

@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: MIT
 // swarmpath arena: draw arenas from the families of sim/arenas (`arena generate`) and list the
 // families with their parameters and ranges (`arena families`).
-#include <fstream>
 #include <memory>
 #include <ostream>
 
 #include <CLI/CLI.hpp>
 
 #include "cli.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 #include "common.hpp"
+#include "evolve/atomic_write.hpp"
+#include "evolve/path_collision.hpp"
 #include "sim/arenas/registry.hpp"
 #include "sim/astar.hpp"
 #include "sim/config_error.hpp"
@@ -61,6 +63,7 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
         << "), the benchmarks' seeds: measure on this arena, never screen or tune on it "
            "(docs/arena-families.md)\n";
   }
+  evolve::check_output_paths({}, {{"--out", o.out}, {"--svg", o.svg}});
   const arenas::GeneratedArena a = arenas::generate_arena(spec, o.seed);
   if (!o.svg.empty()) {
     const sim::AStarResult path = sim::astar(a.scenario);
@@ -81,8 +84,7 @@ int run_generate(const GenerateOptions& o, std::ostream& out, std::ostream& err)
     out << a.toml;
     return kExitOk;
   }
-  std::ofstream f(o.out);
-  if (!f || !(f << a.toml)) throw std::runtime_error("cannot write " + o.out);
+  evolve::write_file_atomic(o.out, a.toml);
   out << "wrote " << o.out << ": " << a.scenario.name << ", class " << sim::to_string(a.scenario.env_class)
       << ", A*-8 " << fixed(sim::to_tu(a.astar8_m), 1) << " TU, " << a.scenario.boxes.size() << " boxes and "
       << a.scenario.cylinders.size() << " cylinders" << (o.svg.empty() ? "" : "; picture " + o.svg) << "\n";
@@ -98,7 +100,7 @@ Runner add_arena(CLI::App& app) {
       "generate",
       "Draw one arena of a family (deterministic in family, parameters and seed) as a scenario file.");
   gen->add_option("--family", g->family, "Arena family (swarmpath arena families lists them)")->required();
-  gen->add_option("--seed", g->seed, "Arena seed: the same seed draws the same arena")->capture_default_str();
+  add_seed_option(*gen, "--seed", g->seed, "Arena seed: the same seed draws the same arena");
   gen->add_option("--set", g->set, "A family parameter, key=value (repeatable), e.g. --set walls=2");
   gen->add_option("--out", g->out, "Write the scenario file here (default: print it)");
   gen->add_option("--svg", g->svg, "Draw the arena with its A* path");

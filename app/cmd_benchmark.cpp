@@ -4,15 +4,16 @@
 // and overall: success with and without task allocation, time to form, path / A*, resource
 // reduction (markdown, JSON, SVG). For measuring a chosen genome, never for choosing one.
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
-#include <omp.h>
 
 #include "benchmark_config.hpp"
 #include "benchmark_report.hpp"
 #include "cli.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/atomic_write.hpp"
@@ -34,7 +35,7 @@ struct BenchmarkOptions {
   std::string mode = "both";
   std::vector<std::string> families;  // only these (default: all)
   bool no_paper = false;
-  int threads = 0;
+  std::optional<int> threads;
   std::string json, markdown, svg;
 };
 
@@ -74,8 +75,7 @@ int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& eva
     throw sim::ConfigError("--mode", 0, "", "must be pf, ta or both");
   const bool pf = both || modes[0] == sim::Mode::kPathFormation;
   const bool ta = both || modes[0] == sim::Mode::kTaskAllocation;
-  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
-  if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
+  const int threads = threads_or_all(o.threads);
   const bool two = !o.against.empty();
   evolve::check_output_paths({{"--params", o.params}, {"--against", o.against}, {"--config", o.config}},
                              {{"--json", o.json}, {"--md", o.markdown}, {"--svg", o.svg}});
@@ -258,7 +258,7 @@ Runner add_benchmark(CLI::App& app, const evolve::EvaluatorFactory& evaluators) 
       ->capture_default_str();
   app.add_option("--families", o->families, "Only these families, e.g. wall-gap,rooms")->delimiter(',');
   app.add_flag("--no-paper", o->no_paper, "Leave out the paper arenas");
-  app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");
+  add_threads_option(app, o->threads);
   app.add_option("--json", o->json, "Write the rows, the arenas and every run as JSON");
   app.add_option("--md", o->markdown, "Write the markdown report to this file too");
   app.add_option("--svg", o->svg, "Draw the success rates per family");

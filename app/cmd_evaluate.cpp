@@ -9,9 +9,9 @@
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
-#include <omp.h>
 
 #include "cli.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/atomic_write.hpp"
@@ -20,6 +20,7 @@
 #include "experiment.hpp"
 #include "sim/astar.hpp"
 #include "sim/config_error.hpp"
+#include "table_output.hpp"
 
 namespace swarmpath::app {
 
@@ -34,7 +35,7 @@ struct EvaluateOptions {
   std::uint64_t seed_base = 1;
   std::string mode = "pf";
   std::optional<std::int64_t> ticks;
-  int threads = 0;
+  std::optional<int> threads;
   std::string json;
 };
 
@@ -123,8 +124,9 @@ int run_evaluate(const EvaluateOptions& o, const evolve::EvaluatorFactory& evalu
   if (o.seeds < 1 || o.seeds > 100000) throw sim::ConfigError("--seeds", 0, "", "must lie in [1, 100000]");
   const sim::Mode mode = mode_from_option(o.mode);
   if (mode == sim::Mode::kDiffusion) throw sim::ConfigError("--mode", 0, "", "must be pf or ta");
-  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
-  if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
+  const int threads = threads_or_all(o.threads);
+  check_seed_range("--seed-base", o.seed_base, o.seeds);
+  check_distinct_robots("--robots", o.robots);
   const bool two = !o.against.empty();
   std::vector<evolve::NamedPath> inputs = {{"--params", o.params}, {"--against", o.against}};
   const std::vector<std::string> files = scenario_files(o.scenarios);
@@ -136,6 +138,7 @@ int run_evaluate(const EvaluateOptions& o, const evolve::EvaluatorFactory& evalu
   // the grid: every scenario x robot count (its own count by default) x seed
   std::vector<sim::Scenario> scenarios;
   for (const std::string& f : files) scenarios.push_back(scenario_with_overrides(f, {}, o.ticks));
+  check_distinct_scenarios("--scenarios", files, scenarios);
   std::vector<GridCase> grid;
   for (std::size_t s = 0; s < scenarios.size(); ++s) {
     const std::vector<int> robots = o.robots.empty() ? std::vector<int>{scenarios[s].robots} : o.robots;
@@ -145,11 +148,7 @@ int run_evaluate(const EvaluateOptions& o, const evolve::EvaluatorFactory& evalu
     }
   }
   note_benchmark_arenas(scenarios, err);
-  std::vector<double> astar(scenarios.size());
-  for (std::size_t s = 0; s < scenarios.size(); ++s) {
-    const sim::AStarResult a = sim::astar(scenarios[s]);
-    astar[s] = a.found ? sim::to_tu(a.length_m) : std::nan("");
-  }
+  const std::vector<double> astar = astar8_lengths(scenarios);
 
   const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
   const bool tty = stderr_is_terminal();
@@ -231,7 +230,8 @@ int run_evaluate(const EvaluateOptions& o, const evolve::EvaluatorFactory& evalu
           << cell(s.mean_robots(), 1) << " |\n";
     };
     for (const Group& g : groups) {
-      row(scenarios[g.scenario].name, std::to_string(g.robots), cell(astar[g.scenario], 1), g.a);
+      row(markdown_text(scenarios[g.scenario].name), std::to_string(g.robots), cell(astar[g.scenario], 1),
+          g.a);
     }
     row("**overall**", "", "", ta);
   } else {
@@ -248,7 +248,8 @@ int run_evaluate(const EvaluateOptions& o, const evolve::EvaluatorFactory& evalu
           << cell(a.mean_robots(), 1) << " | " << cell(b.mean_robots(), 1) << " | "
           << diff(a.mean_robots(), b.mean_robots(), 1) << " |\n";
     };
-    for (const Group& g : groups) row(scenarios[g.scenario].name, std::to_string(g.robots), g.a, g.b);
+    for (const Group& g : groups)
+      row(markdown_text(scenarios[g.scenario].name), std::to_string(g.robots), g.a, g.b);
     row("**overall**", "", ta, tb);
     out << "\npaired (same scenario, robots and seed): both formed the path in " << paired.both << " of "
         << grid.size() << " cases; A faster in " << paired.first_faster << ", B faster in "
@@ -305,12 +306,12 @@ Runner add_evaluate(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
   app.add_option("--robots", o->robots, "Robot counts, e.g. 60,100 (default: each scenario's own)")
       ->delimiter(',');
   app.add_option("--seeds", o->seeds, "Seeds per (scenario, robots)")->capture_default_str();
-  app.add_option("--seed-base", o->seed_base, "The first seed; runs use seed-base ... seed-base+seeds-1")
-      ->capture_default_str();
+  add_seed_option(app, "--seed-base", o->seed_base,
+                  "The first seed; runs use seed-base ... seed-base+seeds-1");
   app.add_option("--mode", o->mode, "pf (path formation) or ta (task allocation, then path formation)")
       ->capture_default_str();
   app.add_option("--ticks", o->ticks, "Override every scenario's max_ticks");
-  app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");
+  add_threads_option(app, o->threads);
   app.add_option("--json", o->json, "Write per-scenario, overall and per-run results as JSON");
   return [o, evaluators](std::ostream& out, std::ostream& err) {
     return run_evaluate(*o, evaluators, out, err);

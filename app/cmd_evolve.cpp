@@ -7,9 +7,9 @@
 #include <ostream>
 
 #include <CLI/CLI.hpp>
-#include <omp.h>
 
 #include "cli.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/evolve_config.hpp"
@@ -28,7 +28,7 @@ namespace {
 struct EvolveOptions {
   std::string config;
   std::string out;
-  int threads = 0;
+  std::optional<int> threads;
   std::optional<int> generations;
   bool resume = false;
   bool force = false;
@@ -134,8 +134,7 @@ int run_evolve(const EvolveOptions& o, const evolve::EvaluatorFactory& evaluator
                std::ostream& err) {
   const evolve::EvolveConfig c = evolve::load_evolve_config(o.config);
   if (o.generations && *o.generations < 1) throw sim::ConfigError("--generations", 0, "", "must be >= 1");
-  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
-  if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
+  const int threads = threads_or_all(o.threads);
   const std::string dir =
       o.out.empty() ? (std::filesystem::path("results") / "evolve" / c.name).string() : o.out;
   if (o.resume && o.force) {
@@ -273,7 +272,7 @@ Runner add_evolve(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
                  "configs/evolve/paper-ta-pareto.toml (NSGA-II, a Pareto front)")
       ->required();
   app.add_option("--out", o->out, "Output folder (default: results/evolve/<config name>)");
-  app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");
+  add_threads_option(app, o->threads);
   app.add_option("--generations", o->generations,
                  "Run this many generations in all (replaces the config's budget; with --resume, the total)");
   app.add_flag("--resume", o->resume, "Continue the run in the output folder from its checkpoint.json");

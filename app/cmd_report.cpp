@@ -4,12 +4,13 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <ostream>
 
 #include <CLI/CLI.hpp>
-#include <omp.h>
 
 #include "cli.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/atomic_write.hpp"
@@ -32,7 +33,7 @@ struct ReportOptions {
   std::string config;
   bool no_replays = false;
   std::int64_t record_every = 0;
-  int threads = 0;
+  std::optional<int> threads;
 };
 
 // the reported genome on the first re-evaluation seed of each training arena (its first robot count)
@@ -72,7 +73,7 @@ std::vector<PageRecording> replays(const ReportOptions& o, const ReportInputs& i
   }
   err << "swarmpath report: recording " << chosen.size() << " replays of " << genome.string() << "\n";
   std::vector<PageRecording> out(chosen.size());
-  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
+  const int threads = threads_or_all(o.threads);
   const auto n = static_cast<std::int64_t>(chosen.size());
   std::vector<std::string> errors(chosen.size());
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
@@ -130,8 +131,7 @@ Runner add_report(CLI::App& app) {
   app.add_flag("--no-replays", o->no_replays, "Leave out the replays (no simulation)");
   app.add_option("--record-every", o->record_every,
                  "Ticks between the replays' frames (default: one second of simulated time, 10 ticks)");
-  app.add_option("--threads", o->threads,
-                 "Threads for the replays (default: all cores); results do not depend on it");
+  add_threads_option(app, o->threads);
   return [o](std::ostream& out, std::ostream& err) { return run_report(*o, out, err); };
 }
 

@@ -2,12 +2,14 @@
 // swarmpath robustness: success, time and path against the share of robots failing and the
 // packet loss, with and without task allocation, from one command (docs/faults.md).
 #include <memory>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
 
 #include "cli.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/atomic_write.hpp"
@@ -30,7 +32,7 @@ struct RobustnessOptions {
   std::string mode = "both";
   std::string params;
   std::optional<std::int64_t> ticks;
-  int threads = 0;
+  std::optional<int> threads;
   RobustnessGrid grid;
   FaultOptions faults;
   std::string json;
@@ -63,7 +65,8 @@ int run_robustness(const RobustnessOptions& o, const evolve::EvaluatorFactory& e
   std::vector<sim::Scenario> base;
   for (const std::string& f : files)
     base.push_back(with_fault_options(scenario_with_overrides(f, {}, o.ticks), o.faults));
-  const int threads = thread_count(o.threads);
+  check_seed_range("--seed-base", o.seed_base, o.seeds);
+  const int threads = threads_or_all(o.threads);
   const std::vector<double> astar8 = astar8_lengths(base);
   const std::vector<Variant> variants = make_variants(base.size(), o.grid);
   const std::vector<sim::Scenario> cases = variant_scenarios(base, variants, o.grid);
@@ -125,13 +128,12 @@ Runner add_robustness(CLI::App& app, const evolve::EvaluatorFactory& evaluators)
       ->capture_default_str();
   app.add_option("--robots", o->robots, "Robot counts, e.g. 60,100")->delimiter(',')->capture_default_str();
   app.add_option("--seeds", o->seeds, "Seeds per (scenario, robots, condition) case")->capture_default_str();
-  app.add_option("--seed-base", o->seed_base, "The first seed; every condition runs the same seeds")
-      ->capture_default_str();
+  add_seed_option(app, "--seed-base", o->seed_base, "The first seed; every condition runs the same seeds");
   app.add_option("--mode", o->mode, "pf, ta or both (each case with and without task allocation)")
       ->capture_default_str();
   app.add_option("--params", o->params, "Params file (default: the code's defaults)");
   app.add_option("--ticks", o->ticks, "Override every scenario's max_ticks");
-  app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");
+  add_threads_option(app, o->threads);
   app.add_option("--fail-fractions", o->grid.fail_fractions,
                  "Shares of the robots that fail-stop during each run, increasing, e.g. 0,0.05,0.1,0.2")
       ->delimiter(',')

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/params_export.hpp"
@@ -23,6 +24,9 @@
 namespace swarmpath::app {
 
 namespace {
+
+// the heat map's cells: 4 000 000 (2000 x 2000 m at 1 m) hold 32 MB of counts
+constexpr std::int64_t kMaxHeatmapCells = 4'000'000;
 
 struct SimulateOptions {
   std::string scenario;
@@ -80,7 +84,19 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
     }
     std::optional<sim::Led> only;
     if (!o.heatmap_led.empty()) only = led_from_option("--heatmap-led", o.heatmap_led);
-    occupancy.emplace(s.arena_bounds(), o.heatmap_cell_cm / 100.0, only);
+    // the heat map holds a count per cell: its size is the product of the arena's sides and the cell
+    const double cell = o.heatmap_cell_cm / 100.0;
+    const double cells = std::ceil(s.arena_size.x / cell - 1e-9) * std::ceil(s.arena_size.y / cell - 1e-9);
+    if (cells > static_cast<double>(kMaxHeatmapCells)) {
+      const double least = std::sqrt(s.arena_size.x * s.arena_size.y / static_cast<double>(kMaxHeatmapCells));
+      throw sim::ConfigError("--heatmap-cell", 0, "",
+                             fixed(o.heatmap_cell_cm, 0) + " cm cells over the " + fixed(s.arena_size.x, 0) +
+                                 " x " + fixed(s.arena_size.y, 0) + " m arena (" + s.file +
+                                 ": arena.size) make " + fixed(cells, 0) + " cells (limit " +
+                                 std::to_string(kMaxHeatmapCells) +
+                                 "): use --heatmap-cell >= " + fixed(std::ceil(least * 100.0), 0));
+    }
+    occupancy.emplace(s.arena_bounds(), cell, only);
   }
   // the recorder only reads the world after each tick: the run is the same with or without it
   std::optional<sim::Recorder> recorder;
@@ -111,6 +127,11 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
   std::optional<sim::AStarResult> a8;
   try {
     a8 = sim::astar(s, {sim::Connectivity::kEight});
+    if (!a8->found) {
+      err << "note: the A* baseline (SPEC 4.5) finds no path from the nest to the goal: a passage is "
+             "narrower "
+             "than a robot\n";
+    }
   } catch (const sim::ConfigError& e) {
     err << "note: no A* baseline: " << e.what() << "\n";
   }
@@ -239,8 +260,7 @@ Runner add_simulate(CLI::App& app) {
       ->required();
   app.add_option("--params", o->params, "Params file (TOML, SPEC 7 names); default: the paper's defaults");
   app.add_option("--robots", o->robots, "Number of robots (default: the scenario's deployment.robots)");
-  app.add_option("--seed", o->seed, "Random seed: deployment and every robot's stream derive from it")
-      ->capture_default_str();
+  add_seed_option(app, "--seed", o->seed, "Random seed: deployment and every robot's stream derive from it");
   app.add_option("--ticks", o->ticks,
                  "Ticks to simulate (default: the scenario's max_ticks; 10 ticks = 1 s)");
   app.add_option(

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/atomic_write.hpp"
@@ -33,7 +34,7 @@ struct TableOptions {
   std::string mode = "pf";
   std::string params;
   std::optional<std::int64_t> ticks;
-  int threads = 0;
+  std::optional<int> threads;
   std::string json;
   std::string csv;
   std::string markdown;
@@ -80,6 +81,8 @@ int run_table(const TableOptions& o, const evolve::EvaluatorFactory& evaluators,
               std::ostream& err) {
   if (o.seeds < 1 || o.seeds > 100000) throw sim::ConfigError("--seeds", 0, "", "must lie in [1, 100000]");
   if (o.robots.empty()) throw sim::ConfigError("--robots", 0, "", "give at least one robot count");
+  check_distinct_robots("--robots", o.robots);
+  check_seed_range("--seed-base", o.seed_base, o.seeds);
   const std::vector<sim::Mode> modes = path_modes(o.mode);
   const bool both = modes.size() == 2;
   const std::vector<std::string> files = scenario_files(o.scenarios);
@@ -91,7 +94,8 @@ int run_table(const TableOptions& o, const evolve::EvaluatorFactory& evaluators,
   for (const std::string& f : files)
     scenarios.push_back(with_fault_options(scenario_with_overrides(f, {}, o.ticks), o.faults));
   note_benchmark_arenas(scenarios, err);
-  const int threads = thread_count(o.threads);
+  check_distinct_scenarios("--scenarios", files, scenarios);
+  const int threads = threads_or_all(o.threads);
   const std::vector<double> astar8 = astar8_lengths(scenarios);  // the A* baseline of each scenario, once
 
   const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
@@ -154,15 +158,15 @@ Runner add_table(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
       ->delimiter(',')
       ->capture_default_str();
   app.add_option("--seeds", o->seeds, "Seeds per (scenario, robots) case")->capture_default_str();
-  app.add_option("--seed-base", o->seed_base, "The first seed; a case uses seed-base ... seed-base+seeds-1")
-      ->capture_default_str();
+  add_seed_option(app, "--seed-base", o->seed_base,
+                  "The first seed; a case uses seed-base ... seed-base+seeds-1");
   app.add_option("--mode", o->mode,
                  "pf (path formation), ta (task allocation, then path formation) or both (each case with and "
                  "without task allocation on the same seeds: the paper's whole table)")
       ->capture_default_str();
   app.add_option("--params", o->params, "Params file (default: the paper's defaults)");
   app.add_option("--ticks", o->ticks, "Override every scenario's max_ticks");
-  app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");
+  add_threads_option(app, o->threads);
   app.add_option("--json", o->json, "Write runs, cases, environments and summary as JSON");
   app.add_option("--csv", o->csv, "Write one CSV line per run");
   app.add_option("--md", o->markdown, "Write the markdown table to this file too");

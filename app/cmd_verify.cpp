@@ -3,12 +3,13 @@
 // default on fresh cases of the evolve config that tuned it (seeds and arenas no run drew) and is
 // judged as that run judged; genomes/tuned.toml lists them (make verify-genomes).
 #include <memory>
+#include <optional>
 #include <ostream>
 
 #include <CLI/CLI.hpp>
-#include <omp.h>
 
 #include "cli.hpp"
+#include "cli_options.hpp"
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/atomic_write.hpp"
@@ -30,7 +31,7 @@ struct VerifyOptions {
   int seeds = 4;
   int arenas = 4;
   std::uint64_t salt = 0;
-  int threads = 0;
+  std::optional<int> threads;
   std::string json;
 };
 
@@ -42,8 +43,7 @@ int run_verify(const VerifyOptions& o, const evolve::EvaluatorFactory& evaluator
     throw sim::ConfigError(o.genome.empty() ? "--config" : "--genome", 0, "",
                            "give --genome and --config together");
   }
-  const int threads = o.threads > 0 ? o.threads : omp_get_max_threads();
-  if (threads > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
+  const int threads = threads_or_all(o.threads);
   const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
   evolve::GenomeManifest m;
   if (o.genome.empty()) {
@@ -121,7 +121,7 @@ Runner add_verify(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
   app.add_option("--arenas", o->arenas, "Fresh arenas per family entry")->capture_default_str();
   app.add_option("--salt", o->salt, "Another set of fresh seeds and arenas (0: the usual one)")
       ->capture_default_str();
-  app.add_option("--threads", o->threads, "Threads (default: all cores); results do not depend on it");
+  add_threads_option(app, o->threads);
   app.add_option("--json", o->json, "Write each genome's verdict as JSON");
   return
       [o, evaluators](std::ostream& out, std::ostream& err) { return run_verify(*o, evaluators, out, err); };

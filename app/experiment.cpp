@@ -9,11 +9,11 @@
 #include <ostream>
 #include <utility>
 
-#include <omp.h>
-
 #include "common.hpp"
+#include "evolve/path_collision.hpp"
 #include "sim/astar.hpp"
 #include "sim/config_error.hpp"
+#include "sim/scenario_identity.hpp"
 
 namespace swarmpath::app {
 
@@ -45,20 +45,6 @@ std::vector<sim::Mode> path_modes(const std::string& mode) {
   if (m == sim::Mode::kDiffusion)
     throw sim::ConfigError("--mode", 0, "", "needs pf, ta or both (diffusion forms no path)");
   return {m};
-}
-
-int thread_count(int requested) {
-  if (requested > 1024) throw sim::ConfigError("--threads", 0, "", "at most 1024");
-  return requested > 0 ? requested : omp_get_max_threads();
-}
-
-std::vector<double> astar8_lengths(const std::vector<sim::Scenario>& scenarios) {
-  std::vector<double> out(scenarios.size());
-  for (std::size_t s = 0; s < scenarios.size(); ++s) {
-    const sim::AStarResult a = sim::astar(scenarios[s]);
-    out[s] = a.found ? sim::to_tu(a.length_m) : std::numeric_limits<double>::quiet_NaN();
-  }
-  return out;
 }
 
 GridProgress grid_progress(std::ostream& err, bool terminal) {
@@ -114,6 +100,50 @@ std::vector<GridRun> run_grid(const std::vector<sim::Scenario>& scenarios, const
                               const sim::Params& p, evolve::BatchEvaluator& evaluator,
                               const GridProgress& progress) {
   return std::move(run_grid(scenarios, grid, std::vector<sim::Params>{p}, evaluator, progress).front());
+}
+
+void check_distinct_scenarios(const std::string& option, const std::vector<std::string>& files,
+                              const std::vector<sim::Scenario>& scenarios) {
+  for (std::size_t i = 0; i < scenarios.size(); ++i) {
+    for (std::size_t k = 0; k < i; ++k) {
+      const auto fail = [&](const std::string& why) {
+        throw sim::ConfigError(option, 0, "", files[k] + " and " + files[i] + " " + why);
+      };
+      if (evolve::same_file(files[k], files[i])) fail("are one file, listed twice");
+      if (sim::experiment_fingerprint(scenarios[k]) == sim::experiment_fingerprint(scenarios[i])) {
+        fail("are the same scenario (the same arena, robots and settings): each would count twice");
+      }
+      if (scenarios[k].name == scenarios[i].name) {
+        fail("are two scenarios of one name, \"" + scenarios[i].name +
+             "\": their rows would merge; give one of them another name");
+      }
+    }
+  }
+}
+
+void check_distinct_robots(const std::string& option, const std::vector<int>& robots) {
+  for (std::size_t i = 0; i < robots.size(); ++i) {
+    for (std::size_t k = 0; k < i; ++k) {
+      if (robots[k] == robots[i]) {
+        throw sim::ConfigError(option, 0, "", std::to_string(robots[i]) + " robots listed twice");
+      }
+    }
+  }
+}
+
+std::vector<double> astar8_lengths(const std::vector<sim::Scenario>& scenarios) {
+  std::vector<double> out;
+  for (const sim::Scenario& s : scenarios) {
+    const sim::AStarResult a = sim::astar(s);
+    if (!a.found) {
+      throw sim::ConfigError(s.file, 0, "",
+                             "the A* baseline (SPEC 4.5: a 1 cm grid, cells within 8.5 cm of an obstacle "
+                             "blocked) finds no path from the nest to the goal: a passage is narrower than "
+                             "a robot; path / A* would be undefined");
+    }
+    out.push_back(sim::to_tu(a.length_m));
+  }
+  return out;
 }
 
 std::vector<std::string> scenario_files(const std::vector<std::string>& paths) {

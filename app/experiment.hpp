@@ -42,12 +42,6 @@ using GridProgress = evolve::BatchProgress;
 /// ConfigError for anything else (diffusion forms no path).
 std::vector<sim::Mode> path_modes(const std::string& mode);
 
-/// --threads: the number asked for, or all cores for 0; throws ConfigError beyond 1024.
-int thread_count(int requested);
-
-/// The A* (8-connected) baseline of each scenario in table units, NaN where there is no path.
-std::vector<double> astar8_lengths(const std::vector<sim::Scenario>& scenarios);
-
 /// Progress lines on `err`: one line rewritten in place on a terminal, else a line every tenth.
 GridProgress grid_progress(std::ostream& err, bool terminal);
 
@@ -68,5 +62,18 @@ std::vector<GridRun> runs_of(const std::vector<GridRun>& runs, sim::Mode mode);
 
 /// Scenario files: each path as given, or for a directory every *.toml in it, sorted by name.
 std::vector<std::string> scenario_files(const std::vector<std::string>& paths);
+
+/// A grid counts each scenario once: throws sim::ConfigError naming `option` when two entries are
+/// one file (by identity), the same experiment (sim::experiment_fingerprint: an identical copy), or
+/// two scenarios of one name (their rows would merge). scenarios[i] was loaded from files[i].
+void check_distinct_scenarios(const std::string& option, const std::vector<std::string>& files,
+                              const std::vector<sim::Scenario>& scenarios);
+
+/// Throws sim::ConfigError naming `option` when a robot count is listed twice.
+void check_distinct_robots(const std::string& option, const std::vector<int>& robots);
+
+/// The A* baseline (SPEC §4.5) of each scenario in table units; throws sim::ConfigError naming the
+/// scenario file when it finds no path (the table's path / A* would be NaN).
+std::vector<double> astar8_lengths(const std::vector<sim::Scenario>& scenarios);
 
 }  // namespace swarmpath::app

@@ -24,6 +24,19 @@ std::string beside(const std::string& ours, const std::optional<PaperRow>& row, 
 
 std::string mode_name(sim::Mode m) { return std::string(sim::to_string(m)); }
 
+// the row's name, and whether it is the paper's arena: "arena-one (the paper's env1)", "env4 (not the
+// paper's env4: its arena differs)"
+std::string env_label(const EnvSummary& e) {
+  std::string label = markdown_text(e.scenario);
+  const std::optional<PaperRow> named = paper_row_named(e.scenario);
+  if (e.paper && (!named || named->env != e.paper->env)) {
+    label += " (the paper's env" + std::to_string(e.paper->env) + ")";
+  } else if (!e.paper && named) {
+    label += " (not the paper's " + e.scenario + ": its arena differs)";
+  }
+  return label;
+}
+
 nlohmann::ordered_json runs_json(const std::vector<sim::Scenario>& scenarios,
                                  const std::vector<double>& astar8_tu, const std::vector<GridRun>& runs) {
   nlohmann::ordered_json rs = nlohmann::ordered_json::array();
@@ -79,9 +92,13 @@ nlohmann::ordered_json env_columns(const EnvSummary& e, sim::Mode mode) {
 }
 
 nlohmann::ordered_json paper_env_json(const PaperRow& p) {
-  return {{"time_without", p.time_without}, {"time_with", p.time_with},
-          {"astar_tu", p.astar_tu},         {"path_without_tu", p.path_without_tu},
-          {"path_with_tu", p.path_with_tu}, {"resource_reduction_pct", p.resource_reduction_pct}};
+  return {{"env", p.env},
+          {"time_without", p.time_without},
+          {"time_with", p.time_with},
+          {"astar_tu", p.astar_tu},
+          {"path_without_tu", p.path_without_tu},
+          {"path_with_tu", p.path_with_tu},
+          {"resource_reduction_pct", p.resource_reduction_pct}};
 }
 
 nlohmann::ordered_json paper_claims_json() {
@@ -123,6 +140,19 @@ void claims_lines(std::ostream& out, const TableReport& r) {
 }
 
 }  // namespace
+
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string out = "\"";
+  for (const char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return out + "\"";
+}
+
+std::string markdown_text(const std::string& text) {
+  std::string out;
+  for (const char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
+  return out;
+}
 
 nlohmann::ordered_json table_json(const std::vector<sim::Scenario>& scenarios,
                                   const std::vector<double>& astar8_tu, const std::vector<GridRun>& runs,
@@ -188,7 +218,7 @@ void write_runs_csv(std::ostream& out, const std::vector<sim::Scenario>& scenari
   const auto tick = [](std::int64_t t) { return t < 0 ? std::string() : std::to_string(t); };
   for (const GridRun& run : runs) {
     const sim::Metrics& m = run.m;
-    out << scenarios[run.c.scenario].name << ',' << run.c.robots << ',' << run.c.seed << ','
+    out << csv_field(scenarios[run.c.scenario].name) << ',' << run.c.robots << ',' << run.c.seed << ','
         << mode_name(run.c.mode) << ',' << (m.success ? 1 : 0) << ',' << tick(m.ticks_to_form) << ','
         << num(m.path_length_tu) << ',' << num(m.subgoal_path_length_tu) << ',' << num(m.opt1_path_length_tu)
         << ',' << fixed(astar8_tu[run.c.scenario], 4) << ',' << m.path_robots << ',' << tick(m.ticks_to_chain)
@@ -210,8 +240,8 @@ void write_markdown(std::ostream& out, const TableReport& r) {
     const PaperRow p = e.paper.value_or(PaperRow{});
     const double p_time = ta ? p.time_with : p.time_without;
     const double p_path = ta ? p.path_with_tu : p.path_without_tu;
-    out << "| " << e.scenario << " | " << e.env_class << " | " << fixed(100.0 * e.success_rate, 0) << " % | "
-        << beside(cell(e.ticks_to_form, 0), e.paper, p_time, 0) << " | "
+    out << "| " << env_label(e) << " | " << e.env_class << " | " << fixed(100.0 * e.success_rate, 0)
+        << " % | " << beside(cell(e.ticks_to_form, 0), e.paper, p_time, 0) << " | "
         << beside(fixed(e.astar8_tu, 1), e.paper, p.astar_tu, 1) << " | "
         << beside(cell(e.path_length_tu, 1), e.paper, p_path, 1) << " | "
         << beside(cell(e.ratio_to_astar, 2), e.paper, p_path / p.astar_tu, 2) << " |";
@@ -237,8 +267,8 @@ void write_markdown(std::ostream& out, const Comparison& c) {
       if (e.scenario == pf.scenario) ta = e;
     }
     const PaperRow p = pf.paper.value_or(PaperRow{});
-    out << "| " << pf.scenario << " | " << pf.env_class << " | " << fixed(100.0 * pf.success_rate, 0) << " / "
-        << fixed(100.0 * ta.success_rate, 0) << " % | "
+    out << "| " << env_label(pf) << " | " << pf.env_class << " | " << fixed(100.0 * pf.success_rate, 0)
+        << " / " << fixed(100.0 * ta.success_rate, 0) << " % | "
         << beside(cell(pf.ticks_to_form, 0), pf.paper, p.time_without, 0) << " | "
         << beside(cell(ta.ticks_to_form, 0), pf.paper, p.time_with, 0) << " | "
         << beside(fixed(pf.astar8_tu, 1), pf.paper, p.astar_tu, 1) << " | "

@@ -24,6 +24,12 @@ nlohmann::ordered_json comparison_json(const std::vector<sim::Scenario>& scenari
                                        const std::vector<double>& astar8_tu, const std::vector<GridRun>& runs,
                                        const Comparison& c);
 
+/// A CSV field (RFC 4180): quoted, with quotes doubled, when it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& text);
+
+/// Text for a markdown table cell: '|' escaped.
+std::string markdown_text(const std::string& text);
+
 /// One line per run (any mode).
 void write_runs_csv(std::ostream& out, const std::vector<sim::Scenario>& scenarios,
                     const std::vector<double>& astar8_tu, const std::vector<GridRun>& runs);

@@ -66,7 +66,7 @@ EnvSummary summarise_env(const TableReport& r, const sim::Scenario& s, double as
   e.scenario = s.name;
   e.env_class = std::string(sim::to_string(s.env_class));
   e.astar8_tu = astar8_tu;
-  e.paper = paper_row(e.scenario);
+  e.paper = paper_row(s);
   std::vector<double> rate, ticks, path, allocated, rr, after;
   for (const CaseSummary& cs : r.cases) {
     if (cs.scenario != e.scenario) continue;
