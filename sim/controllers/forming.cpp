@@ -15,6 +15,11 @@ namespace {
 
 bool nestward_of_target(const PfContext& c, Vec2 at) {
   if (!c.p.subgoal_nestward) return true;  // SPEC's rows #5, #6b: anywhere d_sub from the target
+  // R (link_outward): on its own way from the nest, wherever the new link extends the chain
+  if (c.p.link_outward && c.on_trail && c.m.target.visible) {
+    const Blob* t = blob_of(c.in, c.m.target.id);
+    if (t != nullptr && t->distance_cm < c.sight.other_chain_cm) return true;
+  }
   // nearer the nest than the target; retracing its own way home (which may wind round an
   // obstacle's end) a robot may stop up to trail_slack farther [R]: more, and the chain knots
   const double slack = c.on_trail ? c.p.trail_slack * kCm : 0.0;

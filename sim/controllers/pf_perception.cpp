@@ -173,7 +173,18 @@ void remember_sighting(const Percept& in, Vec2 nest, const PfSight& sight, PfMem
 
 // while forming: the free RED subgoal in view that lies nearest the nest, if it is nearer than the
 // target (the chain's tip, so that the new subgoal extends it)
-const Blob* red_nearer_nest(const Percept& in, Vec2 nest, const PfMemory& m, const Claims& claims) {
+const Blob* red_nearer_nest(const Percept& in, const Params& p, Vec2 nest, const PfMemory& m,
+                            const Claims& claims) {
+  if (p.tip_by_links && p.neighbour_id == NeighbourId::kVisionId) {
+    // R (tip_by_links): the target's child, by the parent its light names; down the chain to its tip
+    const Blob* child = nullptr;
+    for (const Blob& b : in.blobs) {
+      if (b.color != Led::kRed || b.emitter < 0 || b.emitter == m.target.id || b.tag != m.target.id) continue;
+      if (claims.has(b.emitter)) continue;
+      if (child == nullptr || b.distance_cm < child->distance_cm) child = &b;
+    }
+    return child;
+  }
   constexpr double kMargin = 0.2;  // [m]
   double best = dist(m.target.last_seen, nest) - kMargin;
   const Blob* found = nullptr;
@@ -215,7 +226,15 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   if (m.state == PfState::kSubgoalForming && m.target.visible) m.last_saw_target = in.pose.p;
   remember_sighting(in, nest, sight, m);
   if (m.state == PfState::kSubgoalForming && m.target.valid())
-    sight.red_nearer_nest = red_nearer_nest(in, nest, m, claims);
+    sight.red_nearer_nest = red_nearer_nest(in, p, nest, m, claims);
+  if (m.state == PfState::kSubgoalForming && m.target.valid()) {
+    for (const Blob& b : in.blobs) {
+      if (b.emitter == m.target.id) continue;
+      const bool chain = b.emitter == kGoalEmitter || (b.emitter >= 0 && is_path_colour(b.color) &&
+                                                       b.color != Led::kWhite && b.color != Led::kOrange);
+      if (chain && b.distance_cm < sight.other_chain_cm) sight.other_chain_cm = b.distance_cm;
+    }
+  }
   m.nest_ticks =
       (m.state == PfState::kReturnToNest && sight.nest_distance_cm <= p.r_nest_reach) ? m.nest_ticks + 1 : 0;
 }

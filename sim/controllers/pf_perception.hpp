@@ -25,12 +25,13 @@ struct PfSight {
   const Blob* grandparent = nullptr;   ///< bypass: the parent's parent (RED or the goal) within d_sub + 10 cm
   const Blob* heir = nullptr;          ///< relink_recovery: the parent is ORANGE; its own parent, in view
   bool bypassed = false;               ///< bypass: every robot that named me now names another, one my parent
-  bool recovery_near = false;          ///< an ORANGE robot within r_rec
-  bool forming_in_view = false;        ///< a WHITE (subgoal-forming) robot within R_vis
-  bool goal_claimed = false;    ///< single_child: a robot in view forms from the goal or has it as parent
-  bool may_form = true;         ///< this tick's draw of p_form (one at a time)
-  Vec2 repulsion;               ///< R (SPEC §2.1), robot frame
-  double nest_distance_cm = 0;  ///< from the positioning sensor
+  double other_chain_cm = 1e9;   ///< forming: the nearest chain light (goal, RED..BROWN) but the target [cm]
+  bool recovery_near = false;    ///< an ORANGE robot within r_rec
+  bool forming_in_view = false;  ///< a WHITE (subgoal-forming) robot within R_vis
+  bool goal_claimed = false;     ///< single_child: a robot in view forms from the goal or has it as parent
+  bool may_form = true;          ///< this tick's draw of p_form (one at a time)
+  Vec2 repulsion;                ///< R (SPEC §2.1), robot frame
+  double nest_distance_cm = 0;   ///< from the positioning sensor
 };
 
 /// Everything a guard or an action may read.

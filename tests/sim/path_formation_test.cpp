@@ -277,6 +277,53 @@ TEST(PfTable, Row5OnTheTrailStopsAtMostTrailSlackFartherFromTheNest) {
   EXPECT_EQ(fire(m, sees(180), anywhere, true), "#5");
 }
 
+// R: link_outward (off by default; docs/detours.md). Retracing its own way home, a robot may stop
+// as a subgoal however far from the nest, provided its target is the nearest chain light in view:
+// round a doorway off the nest-goal line the way home first leads away from the nest.
+TEST(PfTable, Row5LinkOutwardStopsOnTheTrailWhereTheTargetIsTheNearestChainLight) {
+  const Vec2 behind{-0.75, 0.0};  // the target 75 cm nearer the nest than the robot
+  Reading r;
+  r.add(Led::kRed, 7, 180, 75);
+  Params off;
+  PfMemory m = forming(behind);
+  EXPECT_EQ(fire(m, r, off, true), "");  // 75 cm > trail_slack
+  Params on;
+  on.link_outward = true;
+  m = forming(behind);
+  EXPECT_EQ(fire(m, r, on, true), "#5");
+  EXPECT_EQ(m.parent.id, 7);
+  m = forming(behind);
+  EXPECT_EQ(fire(m, r, on, false), "");  // off its trail: nearer the nest than the target, as before
+  // another chain light nearer than the target: the new link would fold back beside the chain
+  Reading beside = r;
+  beside.add(Led::kRed, 9, 90, 40);
+  m = forming(behind);
+  EXPECT_EQ(fire(m, beside, on, true), "");
+}
+
+// R: tip_by_links (off by default; docs/detours.md). A forming robot walks down the chain by its
+// links: it re-targets to the target's child (the RED whose light names the target as parent), even
+// when the child lies farther from the nest, and not to an unrelated RED nearer the nest.
+TEST(PfTable, Row5rTipByLinksRetargetsToTheTargetsChild) {
+  const auto reading = [] {
+    Reading r;
+    r.add(Led::kRed, 7, 0, 30);             // the target
+    r.add(Led::kRed, 8, 0, 90, 7);          // its child, 60 cm farther from the nest
+    r.add(Led::kRed, 9, 180, 60, kNobody);  // another RED, 0.9 m nearer the nest
+    return r;
+  };
+  Params off;
+  PfMemory m = forming({0.30, 0.0});
+  EXPECT_EQ(fire(m, reading(), off), "#5r");
+  EXPECT_EQ(m.target.id, 9);  // by distance to the nest
+  Params on;
+  on.tip_by_links = true;
+  m = forming({0.30, 0.0});
+  EXPECT_EQ(fire(m, reading(), on), "#5r");
+  EXPECT_EQ(m.target.id, 8);  // by the chain's links
+  EXPECT_EQ(m.form_leg, FormLeg::kToTarget);
+}
+
 TEST(PfTable, Row5rRetargetsToTheSubgoalNearerTheNest) {  // label c while forming
   PfMemory m = forming({0.30, 0.0});
   Reading r;
