@@ -16,6 +16,7 @@
 #include "evolve/evolve_config.hpp"
 #include "evolve/genome_manifest.hpp"
 #include "evolve/objective.hpp"
+#include "evolve/path_collision.hpp"
 #include "evolve/verify.hpp"
 #include "sim/config_error.hpp"
 
@@ -43,6 +44,9 @@ int run_verify(const VerifyOptions& o, const evolve::EvaluatorFactory& evaluator
     throw sim::ConfigError(o.genome.empty() ? "--config" : "--genome", 0, "",
                            "give --genome and --config together");
   }
+  evolve::check_output_paths(
+      {{"--manifest", o.manifest}, {"--genome", o.genome}, {"--config", o.config}, {"--against", o.against}},
+      {{"--json", o.json}});
   const int threads = threads_or_all(o.threads);
   const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
   evolve::GenomeManifest m;

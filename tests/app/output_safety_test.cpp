@@ -91,6 +91,8 @@ TEST(WriteErrors, EveryCommandFailsWhenItsStandardOutputCannotBeWritten) {
       {"evaluate", "--params", source("genomes/default.toml"), "--scenarios", short_chain(), "--robots", "4",
        "--seeds", "1", "--ticks", "5"},
       {"export", "--format", "json"},
+      {"arena", "families"},
+      {"arena", "generate", "--family", "wall-gap", "--seed", "7"},
       {"evolve", "--config", tiny_evolve_config(dir), "--out", (dir / "run").string(), "--threads", "2"},
   };
   for (const auto& args : commands) {
@@ -114,6 +116,9 @@ TEST(WriteErrors, AFullDeviceAsAnOutputFileExitsOneNamingIt) {
       {"evaluate", "--params", source("genomes/default.toml"), "--scenarios", short_chain(), "--robots", "4",
        "--seeds", "1", "--ticks", "5", "--json", "/dev/full"},
       {"export", "--format", "argos", "--out", "/dev/full"},
+      {"simulate", "--scenario", short_chain(), "--robots", "4", "--ticks", "5", "--record", "/dev/full"},
+      {"arena", "generate", "--family", "wall-gap", "--seed", "7", "--out", "/dev/full"},
+      {"arena", "generate", "--family", "wall-gap", "--seed", "7", "--svg", "/dev/full"},
   };
   for (const auto& args : commands) {
     const Result r = cli(args);
@@ -191,6 +196,9 @@ TEST(ProtectedInputs, NoOutputMayReplaceAnInput) {
   expect_refused(
       {"evaluate", "--params", params.string(), "--scenarios", scenario.string(), "--json", params.string()},
       "--json", "--params");
+  expect_refused({"verify", "--genome", params.string(), "--config", params.string(), "--against",
+                  params.string(), "--json", params.string()},
+                 "--json", "--genome");
   // the same file under another name: a hard link, a symbolic link, a path with ./ and ..
   fs::create_hard_link(params, dir / "hard.toml");
   fs::create_symlink(params, dir / "soft.toml");

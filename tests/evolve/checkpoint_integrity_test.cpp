@@ -4,6 +4,7 @@
 // back is exit 2 naming the checkpoint file and the field, before anything runs or is written.
 #include <filesystem>
 #include <functional>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -175,6 +176,55 @@ TEST(CheckpointIntegrity, AnotherConfigOrABrokenFileNamesTheCheckpoint) {
   EXPECT_NE(r.err.find((broken / "checkpoint.json").string() + ": cannot resume: not JSON"),
             std::string::npos)
       << r.err;
+}
+
+// every value of a checkpoint, one at a time: a string where a number, list or null was is always refused
+// (exit 2 naming the checkpoint), and a negative or huge number is refused or resumes, never exit 1, a crash
+// or std::bad_alloc
+void each_leaf(const nlohmann::json& j, const nlohmann::json::json_pointer& at,
+               std::vector<nlohmann::json::json_pointer>& out) {
+  if (j.is_object()) {
+    for (const auto& [key, v] : j.items()) each_leaf(v, at / key, out);
+  } else if (j.is_array() && !j.empty()) {
+    for (std::size_t i = 0; i < j.size(); ++i) each_leaf(j[i], at / i, out);
+  } else {
+    out.push_back(at);
+  }
+}
+
+TEST(CheckpointIntegrity, NoTamperedValueResumesIntoACrash) {
+  const fs::path dir = scratch("leaves");
+  const fs::path good = two_generations(dir, testing::tiny_config("cmaes", 3));
+  const nlohmann::json original = nlohmann::json::parse(read_text(good / "checkpoint.json"));
+  std::vector<nlohmann::json::json_pointer> leaves;
+  each_leaf(original, nlohmann::json::json_pointer(), leaves);
+  ASSERT_GT(leaves.size(), 50u);
+  const fs::path copy = dir / "tampered";
+  int refused = 0;
+  for (const nlohmann::json::json_pointer& leaf : leaves) {
+    for (const nlohmann::json& bad : {nlohmann::json("x"), nlohmann::json(-5), nlohmann::json(1e18)}) {
+      if (original.at(leaf) == bad) continue;
+      fs::remove_all(copy);
+      fs::copy(good, copy, fs::copy_options::recursive);
+      nlohmann::json j = original;
+      j.at(leaf) = bad;
+      write_text(copy / "checkpoint.json", j.dump());
+      // the resume asks for no more generations: an accepted checkpoint only finishes the run
+      const auto r = cli({"evolve", "--config", (dir / "run.toml").string(), "--out", copy.string(),
+                          "--threads", "1", "--generations", "2", "--resume", "--no-wall-time"});
+      const std::string what = leaf.to_string() + " = " + bad.dump() + "\n" + r.err;
+      if (bad.is_string() && !original.at(leaf).is_string()) {  // a type changed
+        EXPECT_EQ(r.code, app::kExitBadInput) << what;
+      } else {
+        EXPECT_TRUE(r.code == app::kExitOk || r.code == app::kExitBadInput) << what;
+      }
+      if (r.code == app::kExitBadInput) {
+        ++refused;
+        EXPECT_NE(r.err.find((copy / "checkpoint.json").string() + ": "), std::string::npos) << what;
+      }
+    }
+  }
+  EXPECT_GT(refused, static_cast<int>(leaves.size()));  // every string and most numbers
 }
 
 }  // namespace
