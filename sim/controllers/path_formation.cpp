@@ -5,6 +5,7 @@
 
 #include "alignment.hpp"
 #include "chain_links.hpp"
+#include "chain_repair.hpp"
 #include "exploring.hpp"
 #include "forming.hpp"
 #include "navigation.hpp"
@@ -88,8 +89,9 @@ namespace {
 // SPEC §2.3, in its order (paper Table 2 labels where they exist). For each state the first row
 // whose guard holds fires; rows 6, 8, 9 and 13 are split where the SPEC lists two conditions. Rows
 // with a letter or a number past 14 are [R] (docs/CHOICES.md): #1h return_finds, #5r retarget_nearer,
-// #7a stop_at_view_edge, #15-#16 chain_bypass, #17 relink_recovery.
-const std::array<PfTransition, 25> kTable{{
+// #7a stop_at_view_edge, #15-#16 chain_bypass, #17 relink_recovery, #18-#20 chain_repair (before
+// the rows that would act on a gone neighbour).
+const std::array<PfTransition, 33> kTable{{
   {PfState::kExploring,      found_goal_or_subgoal,        PfState::kSubgoalForming, take_target,           "#1",  "c"},
   {PfState::kExploring,      exploration_time_over,        PfState::kReturnToNest,   nullptr,               "#2",  "b"},
   {PfState::kReturnToNest,   found_on_the_way_home,        PfState::kSubgoalForming, take_target,           "#1h", "c"},
@@ -103,14 +105,22 @@ const std::array<PfTransition, 25> kTable{{
   {PfState::kSubgoalForming, target_lost_in_visible_range, PfState::kRecovery,       nullptr,               "#7",  "f"},
   {PfState::kSubgoalForming, forming_timeout_target_seen,  PfState::kSubgoal,        target_becomes_parent, "#8a", ""},
   {PfState::kSubgoalForming, forming_timeout,              PfState::kRecovery,       nullptr,               "#8b", ""},
+  {PfState::kSubgoal,        parent_gone_heir_in_view,     PfState::kSubgoal,        relink_over_gap,       "#18a",""},
+  {PfState::kSubgoal,        parent_gone,                  PfState::kReturnToNest,   leave_broken_chain,    "#19a",""},
   {PfState::kSubgoal,        sees_nest,                    PfState::kOpt1,           child_is_nest,         "#9a", "g"},
   {PfState::kSubgoal,        sees_own_sub_nest,            PfState::kOpt1,           child_is_sub_nest,     "#9b", "g"},
   {PfState::kOpt1,           alignment_done,               PfState::kSubNest,        nullptr,               "#10", ""},
+  {PfState::kSubNest,        parent_gone_heir_in_view,     PfState::kSubNest,        relink_over_gap,       "#18b",""},
+  {PfState::kSubNest,        parent_gone,                  PfState::kReturnToNest,   leave_broken_chain,    "#19b",""},
+  {PfState::kSubNest,        child_gone,                   PfState::kSubgoal,        become_tip,            "#20a",""},
   {PfState::kSubNest,        parent_done_or_last_subgoal,  PfState::kOpt2,           nullptr,               "#11", "h"},
   {PfState::kOpt2,           alignment_done,               PfState::kPathDone,       nullptr,               "#12", "a"},
   {PfState::kOpt1,           reference_lost,               PfState::kRecovery,       nullptr,               "#13a","f"},
   {PfState::kOpt2,           reference_lost,               PfState::kRecovery,       nullptr,               "#13b","f"},
   {PfState::kSubNest,        orphaned,                     PfState::kSubgoal,        nullptr,               "#14a",""},
+  {PfState::kPathDone,       parent_gone_heir_in_view,     PfState::kPathDone,       relink_over_gap,       "#18c",""},
+  {PfState::kPathDone,       parent_gone,                  PfState::kReturnToNest,   leave_broken_chain,    "#19c",""},
+  {PfState::kPathDone,       child_gone,                   PfState::kSubgoal,        become_tip,            "#20b",""},
   {PfState::kPathDone,       orphaned,                     PfState::kSubgoal,        nullptr,               "#14b",""},
   {PfState::kSubgoal,        sees_grandparent,             PfState::kSubgoal,        grandparent_becomes_parent, "#15", ""},
   {PfState::kSubgoal,        bypassed,                     PfState::kReturnToNest,   leave_chain,           "#16", ""},

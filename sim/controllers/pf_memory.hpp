@@ -125,6 +125,9 @@ struct PfMemory {
   std::int64_t unclaimed = 0;   ///< SUBGOAL: consecutive ticks no robot claimed it (recruit_call)
   std::int64_t help_until = 0;  ///< refound_starved: its child went to fetch robots; it stays until this tick
   Claimants claimants;          ///< chain_bypass: who has named this subgoal as parent
+  int grandparent = kNobody;    ///< chain_repair: whom the parent's light last named as its own parent
+  std::int64_t parent_gone = 0;  ///< chain_repair: consecutive ticks the parent's link light is gone
+  std::int64_t child_gone = 0;   ///< chain_repair: consecutive ticks the child's link light is gone
 };
 
 /// single_child [R]: an allocated robot claims the goal or subgoal it forms from and respects others'.

@@ -2,6 +2,7 @@
 #include "pf_perception.hpp"
 
 #include "chain_links.hpp"
+#include "chain_repair.hpp"
 #include "colours.hpp"
 #include "ta_protocol.hpp"
 #include "units.hpp"
@@ -214,6 +215,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   if (claims_links(p, m) && p.chain_bypass && m.state == PfState::kSubgoal)
     perceive_bypass(in, p, m, claims, sight);
   if (p.relink_recovery && m.state == PfState::kSubNest) perceive_heir(in, m, sight);
+  if (p.chain_repair) perceive_gaps(in, p, m, sight);
   // recruit_call [R]: how long this subgoal has gone without a robot forming from it or naming it
   m.unclaimed = calls_links(p, m) && m.state == PfState::kSubgoal && !claims.has(in.id) ? m.unclaimed + 1 : 0;
   // refound_starved [R]: its child left to fetch robots; it does not leave itself meanwhile

@@ -24,6 +24,7 @@ struct PfSight {
   const Blob* forming_link = nullptr;  ///< seek_tip: the WHITE (forming) robot in view nearest the nest
   const Blob* grandparent = nullptr;   ///< bypass: the parent's parent (RED or the goal) within d_sub + 10 cm
   const Blob* heir = nullptr;          ///< relink_recovery: the parent is ORANGE; its own parent, in view
+  const Blob* gap_heir = nullptr;      ///< chain_repair: the parent gone, the robot its light named, in view
   bool bypassed = false;               ///< bypass: every robot that named me now names another, one my parent
   double other_chain_cm = 1e9;   ///< forming: the nearest chain light (goal, RED..BROWN) but the target [cm]
   bool recovery_near = false;    ///< an ORANGE robot within r_rec
