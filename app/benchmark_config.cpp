@@ -115,4 +115,28 @@ BenchmarkConfig parse_benchmark_config(std::string_view text, const std::string&
   return parse(doc, base_dir);
 }
 
+std::vector<sim::arenas::GeneratedArena> draw_benchmark_arenas(
+    const std::vector<const BenchmarkFamily*>& families, int threads) {
+  std::vector<std::pair<const BenchmarkFamily*, std::uint64_t>> todo;
+  for (const BenchmarkFamily* f : families) {
+    for (const std::uint64_t s : f->seeds) todo.emplace_back(f, s);
+  }
+  std::vector<sim::arenas::GeneratedArena> out(todo.size());
+  std::vector<std::string> errors(todo.size());
+  const auto n = static_cast<std::int64_t>(todo.size());
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (std::int64_t i = 0; i < n; ++i) {
+    const auto k = static_cast<std::size_t>(i);
+    try {
+      out[k] = sim::arenas::generate_arena(todo[k].first->spec, todo[k].second);
+    } catch (const std::exception& e) {
+      errors[k] = e.what();
+    }
+  }
+  for (const std::string& e : errors) {
+    if (!e.empty()) throw std::runtime_error("drawing a benchmark arena failed: " + e);
+  }
+  return out;
+}
+
 }  // namespace swarmpath::app

@@ -37,6 +37,11 @@ struct BenchmarkConfig {
 /// Reads and checks a benchmark file; errors are ConfigErrors (file:line: key: message).
 BenchmarkConfig load_benchmark_config(const std::string& path);
 
+/// The arenas of `families`, drawn in parallel (each a pure function of family, parameters, seed),
+/// in order; a generator error is a runtime_error.
+std::vector<sim::arenas::GeneratedArena> draw_benchmark_arenas(
+    const std::vector<const BenchmarkFamily*>& families, int threads);
+
 /// The same from text; `base_dir` resolves `paper`.
 BenchmarkConfig parse_benchmark_config(std::string_view text, const std::string& name,
                                        const std::string& base_dir);

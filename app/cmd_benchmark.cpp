@@ -39,31 +39,6 @@ struct BenchmarkOptions {
   std::string json, markdown, svg;
 };
 
-// the arenas of the benchmark, drawn in parallel (each a pure function of family, parameters, seed)
-std::vector<sim::arenas::GeneratedArena> draw_arenas(const std::vector<const BenchmarkFamily*>& families,
-                                                     int threads) {
-  std::vector<std::pair<const BenchmarkFamily*, std::uint64_t>> todo;
-  for (const BenchmarkFamily* f : families) {
-    for (const std::uint64_t s : f->seeds) todo.emplace_back(f, s);
-  }
-  std::vector<sim::arenas::GeneratedArena> out(todo.size());
-  std::vector<std::string> errors(todo.size());
-  const auto n = static_cast<std::int64_t>(todo.size());
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (std::int64_t i = 0; i < n; ++i) {
-    const auto k = static_cast<std::size_t>(i);
-    try {
-      out[k] = sim::arenas::generate_arena(todo[k].first->spec, todo[k].second);
-    } catch (const std::exception& e) {
-      errors[k] = e.what();
-    }
-  }
-  for (const std::string& e : errors) {
-    if (!e.empty()) throw std::runtime_error("drawing a benchmark arena failed: " + e);
-  }
-  return out;
-}
-
 int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& evaluators, std::ostream& out,
                   std::ostream& err) {
   const BenchmarkConfig c = load_benchmark_config(o.config);
@@ -99,7 +74,7 @@ int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& eva
   }
   const Stopwatch clock;
   err << "swarmpath benchmark: " << c.name << " v" << c.version << " (" << c.file << "): drawing arenas\n";
-  const std::vector<sim::arenas::GeneratedArena> arenas = draw_arenas(chosen, threads);
+  const std::vector<sim::arenas::GeneratedArena> arenas = draw_benchmark_arenas(chosen, threads);
   std::vector<sim::Scenario> scenarios;
   std::vector<std::string> group_of;
   std::vector<double> astar8;

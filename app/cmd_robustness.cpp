@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // swarmpath robustness: success, time and path against the share of robots failing and the
 // packet loss, with and without task allocation, from one command (docs/faults.md).
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -8,6 +9,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "benchmark_config.hpp"
 #include "cli.hpp"
 #include "cli_options.hpp"
 #include "commands.hpp"
@@ -26,6 +28,7 @@ namespace {
 
 struct RobustnessOptions {
   std::vector<std::string> scenarios{"configs/scenarios/paper"};
+  std::string benchmark;
   std::vector<int> robots{60, 100};
   int seeds = 10;
   std::uint64_t seed_base = 1;
@@ -61,12 +64,30 @@ int run_robustness(const RobustnessOptions& o, const evolve::EvaluatorFactory& e
   const std::vector<std::string> files = scenario_files(o.scenarios);
   std::vector<evolve::NamedPath> inputs = {{"--params", o.params}};
   for (const std::string& f : files) inputs.push_back({"--scenarios", f});
+  if (!o.benchmark.empty()) inputs.push_back({"--benchmark", o.benchmark});
   evolve::check_output_paths(inputs, {{"--json", o.json}, {"--md", o.markdown}, {"--svg", o.svg}});
   std::vector<sim::Scenario> base;
-  for (const std::string& f : files)
+  std::vector<std::string> group_of;  // a scenario file's folder (paper), or the benchmark's name
+  for (const std::string& f : files) {
     base.push_back(with_fault_options(scenario_with_overrides(f, {}, o.ticks), o.faults));
+    group_of.push_back(std::filesystem::path(f).parent_path().filename().string());
+  }
   check_seed_range("--seed-base", o.seed_base, o.seeds);
   const int threads = threads_or_all(o.threads);
+  if (!o.benchmark.empty()) {
+    // the benchmark's arenas, every family, beside the scenario files (its robots and seeds are the options')
+    const BenchmarkConfig c = load_benchmark_config(o.benchmark);
+    std::vector<const BenchmarkFamily*> families;
+    for (const BenchmarkFamily& f : c.families) families.push_back(&f);
+    err << "swarmpath robustness: drawing the arenas of " << c.name << " v" << c.version << " (" << c.file
+        << ")\n";
+    for (const sim::arenas::GeneratedArena& a : draw_benchmark_arenas(families, threads)) {
+      const sim::Scenario s = sim::with_max_ticks(a.scenario, o.ticks.value_or(c.max_ticks), c.file);
+      base.push_back(with_fault_options(s, o.faults));
+      group_of.push_back(c.name);
+    }
+  }
+  if (base.empty()) throw sim::ConfigError("--scenarios", 0, "", "no scenario to run");
   const std::vector<double> astar8 = astar8_lengths(base);
   const std::vector<Variant> variants = make_variants(base.size(), o.grid);
   const std::vector<sim::Scenario> cases = variant_scenarios(base, variants, o.grid);
@@ -83,7 +104,7 @@ int run_robustness(const RobustnessOptions& o, const evolve::EvaluatorFactory& e
   if (tty) err << "\n";
   err << "  done in " << fixed(clock.seconds(), 1) << " s: " << evaluator->summary() << "\n";
 
-  const RobustnessReport report = summarise_robustness(base, astar8, variants, o.grid, modes, runs);
+  const RobustnessReport report = summarise_robustness(base, astar8, variants, o.grid, modes, runs, group_of);
   std::ostringstream md;
   const sim::FaultModel& f = base[0].faults;
   std::string robots;
@@ -126,6 +147,9 @@ Runner add_robustness(CLI::App& app, const evolve::EvaluatorFactory& evaluators)
   auto o = std::make_shared<RobustnessOptions>();
   app.add_option("--scenarios", o->scenarios, "Scenario files or directories of *.toml")
       ->capture_default_str();
+  app.add_option("--benchmark", o->benchmark,
+                 "Also run the arenas of this benchmark (e.g. configs/benchmarks/generalisation.toml, every "
+                 "family) beside the scenarios, at --robots and --seeds; success is reported per group too");
   app.add_option("--robots", o->robots, "Robot counts, e.g. 60,100")->delimiter(',')->capture_default_str();
   app.add_option("--seeds", o->seeds, "Seeds per (scenario, robots, condition) case")->capture_default_str();
   add_seed_option(app, "--seed-base", o->seed_base, "The first seed; every condition runs the same seeds");

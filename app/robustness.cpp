@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "robustness.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -19,6 +20,17 @@ struct Sums {
   double chain_failures = 0;
   double allocated = 0;
   int allocating = 0;
+
+  void add(const Sums& o) {
+    runs += o.runs;
+    successes += o.successes;
+    ticks += o.ticks;
+    ratio += o.ratio;
+    failures += o.failures;
+    chain_failures += o.chain_failures;
+    allocated += o.allocated;
+    allocating += o.allocating;
+  }
 
   void add(const sim::Metrics& m, double astar8_tu) {
     ++runs;
@@ -100,10 +112,21 @@ const RobustnessCell& RobustnessReport::at(sim::Mode mode, std::size_t fail, std
   throw std::out_of_range("no robustness cell for this mode and condition");
 }
 
+const RobustnessCell& RobustnessReport::at(const std::string& group, sim::Mode mode, std::size_t fail,
+                                           std::size_t loss) const {
+  for (const RobustnessCell& c : per_group) {
+    if (c.scenario == group && c.mode == mode && c.fail == fail && c.loss == loss) return c;
+  }
+  throw std::out_of_range("no robustness cell for this group, mode and condition");
+}
+
 RobustnessReport summarise_robustness(const std::vector<sim::Scenario>& base,
                                       const std::vector<double>& astar8_tu,
                                       const std::vector<Variant>& variants, const RobustnessGrid& g,
-                                      const std::vector<sim::Mode>& modes, const std::vector<GridRun>& runs) {
+                                      const std::vector<sim::Mode>& modes, const std::vector<GridRun>& runs,
+                                      const std::vector<std::string>& group_of) {
+  if (!group_of.empty() && group_of.size() != base.size())
+    throw std::invalid_argument("summarise_robustness: one group per scenario");
   RobustnessReport r;
   r.grid = g;
   r.modes = modes;
@@ -130,17 +153,7 @@ RobustnessReport summarise_robustness(const std::vector<sim::Scenario>& base,
     for (std::size_t f = 0; f < nf; ++f) {
       for (std::size_t l = 0; l < nl; ++l) {
         Sums all;
-        for (std::size_t s = 0; s < base.size(); ++s) {
-          const Sums& one = sums[index(m, s, f, l)];
-          all.runs += one.runs;
-          all.successes += one.successes;
-          all.ticks += one.ticks;
-          all.ratio += one.ratio;
-          all.failures += one.failures;
-          all.chain_failures += one.chain_failures;
-          all.allocated += one.allocated;
-          all.allocating += one.allocating;
-        }
+        for (std::size_t s = 0; s < base.size(); ++s) all.add(sums[index(m, s, f, l)]);
         r.overall.push_back(all.cell(modes[m], "", f, l));
       }
     }
@@ -150,6 +163,23 @@ RobustnessReport summarise_robustness(const std::vector<sim::Scenario>& base,
       for (std::size_t f = 0; f < nf; ++f) {
         for (std::size_t l = 0; l < nl; ++l)
           r.per_scenario.push_back(sums[index(m, s, f, l)].cell(modes[m], base[s].name, f, l));
+      }
+    }
+  }
+  for (const std::string& name : group_of) {
+    if (std::find(r.groups.begin(), r.groups.end(), name) == r.groups.end()) r.groups.push_back(name);
+  }
+  if (r.groups.size() < 2) return r;
+  for (const std::string& name : r.groups) {
+    for (std::size_t m = 0; m < modes.size(); ++m) {
+      for (std::size_t f = 0; f < nf; ++f) {
+        for (std::size_t l = 0; l < nl; ++l) {
+          Sums group;
+          for (std::size_t s = 0; s < base.size(); ++s) {
+            if (group_of[s] == name) group.add(sums[index(m, s, f, l)]);
+          }
+          r.per_group.push_back(group.cell(modes[m], name, f, l));
+        }
       }
     }
   }

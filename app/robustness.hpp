@@ -42,7 +42,7 @@ std::vector<GridCase> robustness_cases(const std::vector<Variant>& variants, con
 /// Means over the runs of one (mode, failure fraction, packet loss), over all scenarios or one.
 struct RobustnessCell {
   sim::Mode mode = sim::Mode::kPathFormation;
-  std::string scenario;  ///< empty: every scenario
+  std::string scenario;  ///< empty: every scenario; else a scenario's name, or a group's
   std::size_t fail = 0;
   std::size_t loss = 0;
   int runs = 0;
@@ -61,16 +61,21 @@ struct RobustnessReport {
   std::vector<std::string> scenarios;
   std::vector<RobustnessCell> overall;       ///< mode-major, then fail, then loss
   std::vector<RobustnessCell> per_scenario;  ///< scenario-major, then mode, fail, loss
+  std::vector<std::string> groups;           ///< the scenarios' groups, first seen first (paper, benchmark)
+  std::vector<RobustnessCell> per_group;     ///< group-major, then mode, fail, loss (two groups or more)
 
-  /// The cell of (mode, fail, loss) over every scenario.
+  /// The cell of (mode, fail, loss) over every scenario, or over one group's.
   const RobustnessCell& at(sim::Mode mode, std::size_t fail, std::size_t loss) const;
+  const RobustnessCell& at(const std::string& group, sim::Mode mode, std::size_t fail,
+                           std::size_t loss) const;
 };
 
 /// Aggregates the runs (in robustness_cases order, any subset of modes); astar8_tu per base
-/// scenario.
+/// scenario; group_of (empty, or one name per base scenario) also sums them by group.
 RobustnessReport summarise_robustness(const std::vector<sim::Scenario>& base,
                                       const std::vector<double>& astar8_tu,
                                       const std::vector<Variant>& variants, const RobustnessGrid& g,
-                                      const std::vector<sim::Mode>& modes, const std::vector<GridRun>& runs);
+                                      const std::vector<sim::Mode>& modes, const std::vector<GridRun>& runs,
+                                      const std::vector<std::string>& group_of = {});
 
 }  // namespace swarmpath::app

@@ -66,12 +66,15 @@ void measure_table(std::ostream& out, const RobustnessReport& r, const std::stri
 
 }  // namespace
 
-std::optional<double> success_drop_at_10pct(const RobustnessReport& r, sim::Mode mode) {
+std::optional<double> success_drop_at_10pct(const RobustnessReport& r, sim::Mode mode,
+                                            const std::string& group) {
   const auto f0 = index_of(r.grid.fail_fractions, 0.0);
   const auto f10 = index_of(r.grid.fail_fractions, 0.1);
   const auto l0 = index_of(r.grid.packet_losses, 0.0);
   if (!f0 || !f10 || !l0 || std::find(r.modes.begin(), r.modes.end(), mode) == r.modes.end())
     return std::nullopt;
+  if (!group.empty())
+    return r.at(group, mode, *f0, *l0).success_pct - r.at(group, mode, *f10, *l0).success_pct;
   return r.at(mode, *f0, *l0).success_pct - r.at(mode, *f10, *l0).success_pct;
 }
 
@@ -86,6 +89,27 @@ void write_robustness_markdown(std::ostream& out, const RobustnessReport& r) {
   measure_table(
       out, r, "Robots failed per run before it ended (mean; holding a chain link)",
       [](const RobustnessCell& c) { return cell(c.failures, 1) + " (" + cell(c.chain_failures, 1) + ")"; });
+  // success per group of arenas (the paper's, the benchmark's), when there are several
+  if (!r.groups.empty() && !r.per_group.empty()) {
+    out << "### Success per arena group (% of runs)\n\n| arenas | mode | packet loss |";
+    for (const double f : r.grid.fail_fractions) out << " " << pct(f) << " failing |";
+    out << "\n|---|---|---|";
+    for (std::size_t i = 0; i < r.grid.fail_fractions.size(); ++i) out << "---|";
+    out << "\n";
+    for (const std::string& g : r.groups) {
+      for (const sim::Mode m : r.modes) {
+        for (const std::size_t l : loss_rows(r, m)) {
+          out << "| " << g << " | " << mode_name(m) << " | " << loss_label(r, m, l) << " |";
+          for (std::size_t f = 0; f < r.grid.fail_fractions.size(); ++f) {
+            const RobustnessCell& c = r.at(g, m, f, l);
+            out << " " << cell(c.success_pct, 1) << " (" << c.runs << ") |";
+          }
+          out << "\n";
+        }
+      }
+    }
+    out << "\n";
+  }
   // success per scenario, one table per packet loss
   for (std::size_t l = 0; l < r.grid.packet_losses.size(); ++l) {
     std::vector<sim::Mode> shown;
@@ -115,12 +139,16 @@ void write_robustness_markdown(std::ostream& out, const RobustnessReport& r) {
     }
     out << "\n";
   }
-  for (const sim::Mode m : r.modes) {
-    if (const auto drop = success_drop_at_10pct(r, m)) {
-      out << "- " << (radio(m) ? "with" : "without")
-          << " task allocation, 10 % of the robots failing: success "
-          << (*drop >= 0 ? "drops by " : "rises by ") << fixed(std::fabs(*drop), 1)
-          << " points (target: at most 10): " << (*drop <= 10.0 ? "met" : "missed") << "\n";
+  std::vector<std::string> over{""};  // every scenario, then each group
+  if (!r.per_group.empty()) over.insert(over.end(), r.groups.begin(), r.groups.end());
+  for (const std::string& g : over) {
+    for (const sim::Mode m : r.modes) {
+      if (const auto drop = success_drop_at_10pct(r, m, g)) {
+        out << "- " << (g.empty() ? "" : g + ", ") << (radio(m) ? "with" : "without")
+            << " task allocation, 10 % of the robots failing: success "
+            << (*drop >= 0 ? "drops by " : "rises by ") << fixed(std::fabs(*drop), 1)
+            << " points (target: at most 10): " << (*drop <= 10.0 ? "met" : "missed") << "\n";
+      }
     }
   }
 }
@@ -167,6 +195,14 @@ nlohmann::ordered_json robustness_json(const RobustnessReport& r, const std::vec
     if (radio(c.mode) || c.loss == 0) per.push_back(cell_json(c));
   }
   j["scenario_cells"] = per;
+  if (!r.per_group.empty()) {
+    j["groups"] = r.groups;
+    nlohmann::ordered_json groups = nlohmann::ordered_json::array();
+    for (const RobustnessCell& c : r.per_group) {
+      if (radio(c.mode) || c.loss == 0) groups.push_back(cell_json(c));
+    }
+    j["group_cells"] = groups;
+  }
   nlohmann::ordered_json target;
   for (const sim::Mode m : r.modes) {
     if (const auto drop = success_drop_at_10pct(r, m))

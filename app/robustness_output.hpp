@@ -14,9 +14,10 @@
 
 namespace swarmpath::app {
 
-/// The drop in success (points) from no failures to 10 % failing at no packet loss, per mode;
-/// nullopt where the grid lacks 0 or 0.1 (or 0 packet loss).
-std::optional<double> success_drop_at_10pct(const RobustnessReport& r, sim::Mode mode);
+/// The drop in success (points) from no failures to 10 % failing at no packet loss, per mode, over
+/// every scenario or one group's; nullopt where the grid lacks 0 or 0.1 (or 0 packet loss).
+std::optional<double> success_drop_at_10pct(const RobustnessReport& r, sim::Mode mode,
+                                            const std::string& group = "");
 
 void write_robustness_markdown(std::ostream& out, const RobustnessReport& r);
 

@@ -130,5 +130,51 @@ TEST(FaultCli, RobustnessSweepsFailuresAndPacketLoss) {
   EXPECT_NE(svg.find("robots failing (%)"), std::string::npos);
 }
 
+TEST(FaultCli, RobustnessRunsABenchmarksArenasBesideTheScenariosAndReportsEachGroup) {
+  const auto dir = temp_dir();
+  const auto config = dir / "tiny_benchmark.toml";
+  std::ofstream(config) << "name = \"tiny\"\nversion = 1\ngenerator_version = 1\nrobots = [8]\nseeds = 1\n"
+                           "max_ticks = 300\n\n[[family]]\nfamily = \"open\"\nseeds = [1000001, 1000002]\n"
+                           "params = { width = 10, height = 8, distance_min = 3, distance_max = 4 }\n";
+  const auto r = cli({"robustness",
+                      "--scenarios",
+                      source("tests/data/short_chain.toml"),
+                      "--benchmark",
+                      config.string(),
+                      "--robots",
+                      "8",
+                      "--seeds",
+                      "1",
+                      "--mode",
+                      "pf",
+                      "--fail-fractions",
+                      "0,0.5",
+                      "--fail-window",
+                      "0,0",
+                      "--packet-loss",
+                      "0",
+                      "--ticks",
+                      "200",
+                      "--threads",
+                      "2",
+                      "--json",
+                      (dir / "b.json").string()});
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("### Success per arena group"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| data | pf | any (no radio) |"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| tiny | pf | any (no radio) |"), std::string::npos) << r.out;
+  const auto j = nlohmann::json::parse(read(dir / "b.json"));
+  EXPECT_EQ(j["groups"], nlohmann::json({"data", "tiny"}));
+  EXPECT_EQ(j["scenarios"].size(), 3u);  // the scenario file and the benchmark's two arenas
+  EXPECT_EQ(j["runs"].size(), 3u * 2u);  // ... at each failure fraction
+  ASSERT_EQ(j["group_cells"].size(), 2u * 2u);
+  for (const auto& c : j["group_cells"]) {
+    EXPECT_EQ(c["runs"], c["scenario"] == "tiny" ? 2 : 1);
+    EXPECT_EQ(c["failures"], c["fail_fraction"] == 0.5 ? 4.0 : 0.0);  // half of 8, all at tick 0
+  }
+  // a benchmark file that is not there is an input error
+  EXPECT_EQ(cli({"robustness", "--benchmark", (dir / "missing.toml").string()}).code, 2);
+}
+
 }  // namespace
 }  // namespace swarmpath::app
