@@ -132,7 +132,9 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
   std::unique_ptr<MultiObjectiveOptimizer> opt = make_multi_objective(
       c.optimizer, c.genome.bounds(), encode(c.genome, c.genome.base), kinds.size(), optimizer_seed(c.seed));
   const std::optional<FolderLock> lock = lock_run_folder(c, o);
-  RunState st = starting_state(c, o, [&](const nlohmann::json& j) { opt->restore(j); });
+  bool resumed = false;
+  RunState st = starting_state(
+      c, o, [&](const nlohmann::json& j) { opt->restore(j); }, resumed);
   std::unique_ptr<BatchEvaluator> own_evaluator;
   BatchEvaluator& evaluator = evaluator_of(o, own_evaluator);
 
@@ -140,7 +142,7 @@ ParetoResult run_pareto(const EvolveConfig& c, const CaseObjective& f, const Run
   result.settings = f.settings();
   const bool fixed = c.evaluation.fixed_seeds;
   result.cases = first_cases(c, result.settings);
-  if (o.resume) check_resumed_state(c, st, result.cases.size(), opt->population().size(), checkpoint_path(o));
+  if (resumed) check_resumed_state(c, st, result.cases.size(), opt->population().size(), checkpoint_path(o));
   if (files && !st.history.empty()) write_progress(c, st, o.out_dir);  // in step with the checkpoint
 
   const RunClock clock(st.seconds, o.wall_time);

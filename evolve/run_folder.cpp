@@ -23,6 +23,8 @@ std::string earlier_run(const fs::path& folder, const std::vector<std::string>& 
   std::string files;
   for (const std::string& f : present) files += (files.empty() ? "" : ", ") + f;
   const fs::path ck = folder / "checkpoint.json";
+  if (stopped_before_first_checkpoint(folder.string()))
+    return "the files of a run stopped in its first generation, before its first checkpoint (" + files + ")";
   if (!fs::exists(ck)) return "files of an earlier run (" + files + ")";
   try {
     const RunState s = read_checkpoint(ck.string());
@@ -53,6 +55,17 @@ const std::vector<std::string>& run_file_names() {
                                                  "hypervolume.svg", "best.toml",  "run.json",
                                                  "pareto.csv",      "pareto.svg", "front"};
   return names;
+}
+
+bool stopped_before_first_checkpoint(const std::string& folder) {
+  const fs::path dir(folder);
+  for (const char* f : {"checkpoint.json", "run.json", "best.toml", "pareto.csv", "front"}) {
+    if (fs::exists(dir / f)) return false;
+  }
+  for (const char* f : {"log.csv", "fitness.svg", "hypervolume.svg"}) {
+    if (fs::exists(dir / f)) return true;
+  }
+  return false;
 }
 
 void check_run_inputs(const EvolveConfig& c, const std::string& folder) {

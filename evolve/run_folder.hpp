@@ -27,4 +27,9 @@ void check_run_inputs(const EvolveConfig& c, const std::string& folder);
 void prepare_run_folder(const std::string& folder, bool resume, bool force,
                         const std::function<void(const std::string&)>& note);
 
+/// True when `folder` holds what a run killed during its first generation leaves: progress files
+/// (log.csv, fitness.svg, hypervolume.svg, written before the checkpoint) but no checkpoint.json,
+/// run.json or best.toml. Such a run has nothing to continue from: a resume starts it again.
+bool stopped_before_first_checkpoint(const std::string& folder);
+
 }  // namespace swarmpath::evolve

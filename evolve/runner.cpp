@@ -82,7 +82,8 @@ std::optional<FolderLock> lock_run_folder(const EvolveConfig& c, const RunOption
 }
 
 RunState starting_state(const EvolveConfig& c, const RunOptions& o,
-                        const std::function<void(const nlohmann::json&)>& restore) {
+                        const std::function<void(const nlohmann::json&)>& restore, bool& resumed) {
+  resumed = false;
   const bool files = !o.out_dir.empty();
   if (o.resume && o.force) throw std::invalid_argument("resume and force exclude each other");
   if (files) {
@@ -91,8 +92,15 @@ RunState starting_state(const EvolveConfig& c, const RunOptions& o,
   }
   RunState st;
   st.config_hash = config_hash(c);
-  if (o.resume) {
-    if (!files) throw std::invalid_argument("resuming needs the output folder of the run");
+  if (o.resume && !files) throw std::invalid_argument("resuming needs the output folder of the run");
+  if (o.resume && stopped_before_first_checkpoint(o.out_dir)) {
+    // the checkpoint goes last, so a kill in generation 0 leaves its log but no checkpoint: the
+    // resume runs the whole run again, as the checkpoint before generation 0 would have
+    if (o.note)
+      o.note("no checkpoint yet in " + o.out_dir +
+             " (stopped in its first generation): starting at generation 0");
+  } else if (o.resume) {
+    resumed = true;
     const std::string checkpoint = (fs::path(o.out_dir) / "checkpoint.json").string();
     st = resumed_state(c, checkpoint);
     try {
@@ -267,7 +275,9 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   std::unique_ptr<Optimizer> opt =
       factory(c.optimizer, c.genome.bounds(), encode(c.genome, c.genome.base), optimizer_seed(c.seed));
   const std::optional<FolderLock> lock = lock_run_folder(c, o);
-  RunState st = starting_state(c, o, [&](const nlohmann::json& j) { opt->restore(j); });
+  bool resumed = false;
+  RunState st = starting_state(
+      c, o, [&](const nlohmann::json& j) { opt->restore(j); }, resumed);
   std::unique_ptr<BatchEvaluator> own_evaluator;
   BatchEvaluator& evaluator = evaluator_of(o, own_evaluator);
 
@@ -275,7 +285,7 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   result.settings = f.settings();
   const bool fixed = c.evaluation.fixed_seeds;
   result.cases = first_cases(c, result.settings);
-  if (o.resume) check_resumed_state(c, st, result.cases.size(), 0, checkpoint_path(o));
+  if (resumed) check_resumed_state(c, st, result.cases.size(), 0, checkpoint_path(o));
   if (files && !st.history.empty()) write_progress_files(c, st, o.out_dir);  // in step with the checkpoint
 
   const RunClock clock(st.seconds, o.wall_time);

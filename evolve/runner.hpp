@@ -83,11 +83,13 @@ std::optional<FolderLock> lock_run_folder(const EvolveConfig& c, const RunOption
 
 /// The state a run starts from: fresh (with the config's hash), or with options.resume the
 /// checkpoint in options.out_dir (checked by resumed_state, its optimiser state handed to
-/// `restore`, announced through options.note). With an out_dir (locked by lock_run_folder), first
-/// checks that no run file is an input and prepares the folder (prepare_run_folder: an earlier run
-/// there is refused unless options.resume or options.force).
+/// `restore`, announced through options.note; `resumed` says so). A resume of a folder stopped
+/// before its first checkpoint (stopped_before_first_checkpoint) starts fresh, with a note. With
+/// an out_dir (locked by lock_run_folder), first checks that no run file is an input and prepares
+/// the folder (prepare_run_folder: an earlier run there is refused unless options.resume or
+/// options.force).
 RunState starting_state(const EvolveConfig& c, const RunOptions& options,
-                        const std::function<void(const nlohmann::json&)>& restore);
+                        const std::function<void(const nlohmann::json&)>& restore, bool& resumed);
 
 /// The training cases of generation 0 (later generations differ in seed only); throws
 /// std::invalid_argument when there are none.

@@ -5,6 +5,7 @@ set -euo pipefail
 
 packages=(
   build-essential g++ make cmake ninja-build git clang-format
+  python3                 # scripts/hostile_user.py, run by the tests
   libbox2d-dev            # Box2D 2.4: the physics
   libeigen3-dev           # CMA-ES linear algebra
   libnlopt-cxx-dev        # NLopt derivative-free optimisers

@@ -43,6 +43,22 @@ std::map<std::string, std::string> folder_files(const fs::path& dir) {
   return files;
 }
 
+// dir/tiny.toml (two generations) run straight through into dir/straight, and stopped after its
+// first generation in `stopped`
+void straight_and_stopped(const fs::path& dir, const fs::path& stopped) {
+  write_text(dir / "tiny.toml", testing::tiny_config("random", 2));
+  ASSERT_EQ(cli(evolve_args(dir / "tiny.toml", dir / "straight")).code, 0);
+  ASSERT_EQ(cli(evolve_args(dir / "tiny.toml", stopped, {"--generations", "1"})).code, 0);
+}
+
+// a resumed run's folder ends byte for byte as an uninterrupted run's (run.json's thread count aside)
+void expect_same_run(const fs::path& resumed, const fs::path& straight) {
+  for (const char* f : {"log.csv", "checkpoint.json", "best.toml", "fitness.svg"}) {
+    EXPECT_EQ(read_text(resumed / f), read_text(straight / f)) << f;
+  }
+  EXPECT_EQ(testing::run_json_text(resumed), testing::run_json_text(straight));
+}
+
 TEST(FolderLock, ASecondLockOnTheSameFolderFailsNamingTheHolder) {
   const fs::path dir = scratch("locked") / "out";
   {
@@ -109,10 +125,8 @@ TEST(RunFolder, AFinishedRunIsNeverReplacedWithoutResumeOrForce) {
 
 TEST(RunFolder, AFailedWriteOnTheLastGenerationLeavesACheckpointThatReRunsIt) {
   const fs::path dir = scratch("order");
-  write_text(dir / "tiny.toml", testing::tiny_config("random", 2));
   const fs::path straight = dir / "straight", broken = dir / "broken";
-  ASSERT_EQ(cli(evolve_args(dir / "tiny.toml", straight)).code, 0);
-  ASSERT_EQ(cli(evolve_args(dir / "tiny.toml", broken, {"--generations", "1"})).code, 0);
+  ASSERT_NO_FATAL_FAILURE(straight_and_stopped(dir, broken));
   // log.csv cannot be replaced during the last generation (a folder stands in its way)
   fs::remove(broken / "log.csv");
   fs::create_directories(broken / "log.csv");
@@ -125,10 +139,7 @@ TEST(RunFolder, AFailedWriteOnTheLastGenerationLeavesACheckpointThatReRunsIt) {
   fs::remove(broken / "log.csv");
   r = cli(evolve_args(dir / "tiny.toml", broken, {"--resume"}));
   ASSERT_EQ(r.code, 0) << r.err;
-  for (const char* f : {"log.csv", "checkpoint.json", "best.toml", "fitness.svg"}) {
-    EXPECT_EQ(read_text(broken / f), read_text(straight / f)) << f;
-  }
-  EXPECT_EQ(testing::run_json_text(broken), testing::run_json_text(straight));
+  expect_same_run(broken, straight);
 }
 
 TEST(RunFolder, AResumeRewritesALogThatRanAheadOfTheCheckpoint) {
@@ -141,6 +152,32 @@ TEST(RunFolder, AResumeRewritesALogThatRanAheadOfTheCheckpoint) {
   write_text(out / "log.csv", log + "2,9,9,0,9,0,12,0\n");
   ASSERT_EQ(cli(evolve_args(dir / "tiny.toml", out, {"--resume"})).code, 0);
   EXPECT_EQ(read_text(out / "log.csv"), log);
+}
+
+TEST(RunFolder, AKillInTheFirstGenerationBeforeAnyCheckpointResumesFromTheStart) {
+  const fs::path dir = scratch("first");
+  const fs::path straight = dir / "straight", killed = dir / "killed";
+  ASSERT_NO_FATAL_FAILURE(straight_and_stopped(dir, killed));
+  // what a kill between log.csv and the first checkpoint.json leaves: the first generation's log
+  // and plot, no checkpoint
+  for (const char* f : {"checkpoint.json", "run.json", "best.toml"}) fs::remove(killed / f);
+  ASSERT_TRUE(fs::exists(killed / "log.csv"));
+  // a fresh start is refused (the files are an earlier run's), saying how far it got ...
+  app::cli_support::CliResult r = cli(evolve_args(dir / "tiny.toml", killed));
+  EXPECT_EQ(r.code, app::kExitBadInput) << r.err;
+  for (const char* word : {"stopped in its first generation", "--resume"})
+    EXPECT_NE(r.err.find(word), std::string::npos) << word << "\n" << r.err;
+  // ... and --resume, which that message offers, runs it from generation 0 to the same end
+  r = cli(evolve_args(dir / "tiny.toml", killed, {"--resume"}));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("starting at generation 0"), std::string::npos) << r.err;
+  expect_same_run(killed, straight);
+  // a folder with no run at all still has nothing to resume
+  const fs::path empty = dir / "empty";
+  fs::create_directories(empty);
+  r = cli(evolve_args(dir / "tiny.toml", empty, {"--resume"}));
+  EXPECT_EQ(r.code, app::kExitBadInput) << r.err;
+  EXPECT_NE(r.err.find("no checkpoint here"), std::string::npos) << r.err;
 }
 
 TEST(RunFolder, NoRunFileMayReplaceAnInputOfTheRun) {
