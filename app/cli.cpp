@@ -103,6 +103,11 @@ int dispatch(const std::vector<std::string>& args, std::ostream& out, std::ostre
         "report", "A tuning run (evolve's output folder) as one self-contained web page, with replays.");
     commands.push_back({c, add_report(*c)});
   }
+  {
+    CLI::App* c = app.add_subcommand(
+        "irace", "Tune with irace: write an irace scenario from an evolve config, import irace's best.");
+    commands.push_back({c, add_irace(*c)});
+  }
 
   // an unknown command: named, with the nearest one (CLI11 would only say that one is required)
   if (!args.empty() && !args[0].empty() && args[0][0] != '-') {

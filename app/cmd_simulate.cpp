@@ -174,32 +174,9 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
   }
 
   if (o.json) {
-    nlohmann::ordered_json j;
-    j["scenario"] = s.name;
-    j["scenario_file"] = s.file;
-    j["env_class"] = std::string(sim::to_string(s.env_class));
-    j["mode"] = std::string(sim::to_string(mode));
-    j["controller"] = evolve::controller_json(p);
-    j["robots"] = m.robots;
-    j["seed"] = o.seed;
-    j["ticks"] = m.ticks;
-    j["max_ticks"] = s.sim.max_ticks;
-    j["state_hash"] = sim::to_hex(m.state_hash);
-    j["distance_m"] = m.distance_m;
-    j["mean_speed_cm_s"] = m.mean_speed_cm_s;
-    j["astar8_tu"] = a8 && a8->found ? nlohmann::json(sim::to_tu(a8->length_m)) : nlohmann::json(nullptr);
-    if (pf) add_path_json(j, m);
-    if (ta && m.allocated < 0) {  // no allocation happened: say so explicitly
-      j["allocated"] = nullptr;
-      j["resource_reduction_pct"] = nullptr;
-      j["ticks_to_allocate"] = nullptr;
-    }
-    if (s.faults.any()) {
-      j["faults"] = faults_json(s.faults);
-      j["failures"] = m.failures;
-      j["chain_failures"] = m.chain_failures;
-    }
-    j["table_unit_cm"] = 10;
+    const std::optional<double> astar8 =
+        a8 && a8->found ? std::optional<double>(sim::to_tu(a8->length_m)) : std::nullopt;
+    nlohmann::ordered_json j = simulation_json(p, s, mode, o.seed, m, astar8);
     j["wall_seconds"] = seconds;
     j["robot_ticks_per_second"] = robot_ticks_per_s;
     if (!o.svg.empty()) j["svg"] = o.svg;

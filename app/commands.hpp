@@ -30,5 +30,6 @@ Runner add_view(CLI::App& app);
 Runner add_report(CLI::App& app);
 Runner add_benchmark(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
 Runner add_verify(CLI::App& app, const evolve::EvaluatorFactory& evaluators);
+Runner add_irace(CLI::App& app);
 
 }  // namespace swarmpath::app

@@ -7,8 +7,12 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "evolve/params_export.hpp"
+#include "fault_options.hpp"
 #include "sim/arenas/registry.hpp"
+#include "sim/astar.hpp"
 #include "sim/config_error.hpp"
+#include "sim/hash.hpp"
 
 namespace swarmpath::app {
 
@@ -81,6 +85,49 @@ void note_benchmark_arenas(const std::vector<sim::Scenario>& scenarios, std::ost
   if (names.empty()) return;
   err << "note: " << names << " were drawn from benchmark seeds: report these results, but never choose a "
       << "controller, a rule or a parameter by them (docs/generalisation.md)\n";
+}
+
+std::optional<double> astar8_tu(const sim::Scenario& s, std::string* why) {
+  try {
+    const sim::AStarResult a = sim::astar(s, {sim::Connectivity::kEight});
+    if (a.found) return sim::to_tu(a.length_m);
+  } catch (const sim::ConfigError& e) {
+    if (why != nullptr) *why = e.what();
+  }
+  return std::nullopt;
+}
+
+nlohmann::ordered_json simulation_json(const sim::Params& p, const sim::Scenario& s, sim::Mode mode,
+                                       std::uint64_t seed, const sim::Metrics& m,
+                                       const std::optional<double>& astar8) {
+  nlohmann::ordered_json j;
+  j["scenario"] = s.name;
+  j["scenario_file"] = s.file;
+  j["env_class"] = std::string(sim::to_string(s.env_class));
+  j["mode"] = std::string(sim::to_string(mode));
+  j["controller"] = evolve::controller_json(p);
+  j["robots"] = m.robots;
+  j["seed"] = seed;
+  j["ticks"] = m.ticks;
+  j["max_ticks"] = s.sim.max_ticks;
+  j["state_hash"] = sim::to_hex(m.state_hash);
+  j["distance_m"] = m.distance_m;
+  j["mean_speed_cm_s"] = m.mean_speed_cm_s;
+  j["astar8_tu"] = astar8 ? nlohmann::json(*astar8) : nlohmann::json(nullptr);
+  const bool pf = mode == sim::Mode::kPathFormation || mode == sim::Mode::kTaskAllocation;
+  if (pf) add_path_json(j, m);
+  if (mode == sim::Mode::kTaskAllocation && m.allocated < 0) {  // no allocation happened: say so explicitly
+    j["allocated"] = nullptr;
+    j["resource_reduction_pct"] = nullptr;
+    j["ticks_to_allocate"] = nullptr;
+  }
+  if (s.faults.any()) {
+    j["faults"] = faults_json(s.faults);
+    j["failures"] = m.failures;
+    j["chain_failures"] = m.chain_failures;
+  }
+  j["table_unit_cm"] = 10;
+  return j;
 }
 
 std::string fixed(double v, int digits) {

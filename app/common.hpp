@@ -39,6 +39,16 @@ void add_path_json(nlohmann::ordered_json& j, const sim::Metrics& m);
 /// what a benchmark is for, screening or tuning on them is not (docs/generalisation.md).
 void note_benchmark_arenas(const std::vector<sim::Scenario>& scenarios, std::ostream& err);
 
+/// The A* (8-connected) length of a scenario [TU]; nullopt when there is no path or the arena is too
+/// large for the A* grid (then `why` says so, when given).
+std::optional<double> astar8_tu(const sim::Scenario& s, std::string* why = nullptr);
+
+/// Every field of `simulate --json` that the run determines (all but the wall-clock and file ones):
+/// scenario, mode, controller, robots, seed, ticks, state_hash, ..., the path, allocation and fault fields.
+nlohmann::ordered_json simulation_json(const sim::Params& p, const sim::Scenario& s, sim::Mode mode,
+                                       std::uint64_t seed, const sim::Metrics& m,
+                                       const std::optional<double>& astar8);
+
 /// Fixed-point text with `digits` decimals.
 std::string fixed(double v, int digits);
 

@@ -152,13 +152,33 @@ Gene default_gene(const sim::ParamInfo& info) {
   return g;
 }
 
-double gene_value(const Gene& g, double x) {
-  x = std::clamp(x, 0.0, 1.0);
-  if (g.binary()) return x >= 0.5 ? 1.0 : 0.0;
-  const double raw = g.log ? g.lo * std::pow(g.hi / g.lo, x) : g.lo + x * (g.hi - g.lo);
+namespace {
+
+// a value of a numeric gene (in any units between its bounds) on the gene's grid
+double snap_to_grid(const Gene& g, double raw) {
   const Grid grid = grid_of(g);
   if (grid.unit > 0.0) return at(grid, std::clamp(index_of(grid, raw, Snap::kNearest), 0.0, grid.kmax));
   return canonical(std::clamp(raw, g.lo, g.hi));
+}
+
+// repairs the cross constraints of d.params and records what is left
+void repair_all(const Genome& g, Decoded& d) {
+  // a repair may break an earlier pair (raising theta_soft for theta_none, say): a few passes
+  for (int pass = 0; pass < 3; ++pass) {
+    bool moved = false;
+    for (const Order& o : kOrders) moved = repair(g, o, d.params) || moved;
+    if (!moved) break;
+    d.repaired = true;
+  }
+  d.violation = sim::check_params(d.params);
+}
+
+}  // namespace
+
+double gene_value(const Gene& g, double x) {
+  x = std::clamp(x, 0.0, 1.0);
+  if (g.binary()) return x >= 0.5 ? 1.0 : 0.0;
+  return snap_to_grid(g, g.log ? g.lo * std::pow(g.hi / g.lo, x) : g.lo + x * (g.hi - g.lo));
 }
 
 double gene_coordinate(const Gene& g, double v) {
@@ -174,14 +194,23 @@ Decoded decode(const Genome& g, std::span<const double> x) {
   for (std::size_t i = 0; i < g.genes.size(); ++i) {
     sim::set_value(d.params, *g.genes[i].info, gene_value(g.genes[i], i < x.size() ? x[i] : 0.5));
   }
-  // a repair may break an earlier pair (raising theta_soft for theta_none, say): a few passes
-  for (int pass = 0; pass < 3; ++pass) {
-    bool moved = false;
-    for (const Order& o : kOrders) moved = repair(g, o, d.params) || moved;
-    if (!moved) break;
-    d.repaired = true;
+  repair_all(g, d);
+  return d;
+}
+
+Decoded decode_values(const Genome& g, std::span<const double> values) {
+  Decoded d;
+  d.params = g.base;
+  std::string not_finite;
+  for (std::size_t i = 0; i < g.genes.size() && i < values.size(); ++i) {
+    const Gene& gene = g.genes[i];
+    if (!std::isfinite(values[i]) && not_finite.empty())
+      not_finite = std::string(gene.info->name) + " is not a number";
+    const double v = gene.binary() ? (values[i] != 0.0 ? 1.0 : 0.0) : snap_to_grid(gene, values[i]);
+    sim::set_value(d.params, *gene.info, v);
   }
-  d.violation = sim::check_params(d.params);
+  repair_all(g, d);
+  if (!not_finite.empty()) d.violation = not_finite;  // never repaired into a value
   return d;
 }
 

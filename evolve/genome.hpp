@@ -65,6 +65,12 @@ struct Decoded {
 /// candidate keeps the violation and is penalised without simulation.
 Decoded decode(const Genome& g, std::span<const double> x);
 
+/// The candidate with these tuned values (in gene order; bools and choices as 0/1): each value is
+/// clamped into its gene's bounds and rounded to its grid as decode() does, then the cross
+/// constraints are repaired. What an outside tuner's values (irace, Optuna) become. A value that is
+/// not finite is a violation (the candidate is penalised), never repaired into a value.
+Decoded decode_values(const Genome& g, std::span<const double> values);
+
 /// The coordinates of p's tuned values (each clamped into the gene's bounds); the optimiser's
 /// start point is encode(genome, genome.base).
 Vector encode(const Genome& g, const sim::Params& p);

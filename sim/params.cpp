@@ -357,8 +357,8 @@ std::string_view culprit(const std::string& message) {
   return std::string_view(message).substr(0, end);
 }
 
-Params parse(const TomlDoc& doc) {
-  Params p;
+Params parse(const TomlDoc& doc, const Params& base) {
+  Params p = base;
   const TableReader root(doc, doc.root(), "");
   for (const std::string& key : root.keys()) {
     if (key == "meta") {
@@ -405,14 +405,14 @@ Params parse(const TomlDoc& doc) {
 
 }  // namespace
 
-Params parse_params(std::string_view text, const std::string& name) {
+Params parse_params(std::string_view text, const std::string& name, const Params& base) {
   const TomlDoc doc = TomlDoc::parse_string(text, name);
-  return parse(doc);
+  return parse(doc, base);
 }
 
 Params load_params(const std::string& path) {
   const TomlDoc doc = TomlDoc::parse_file(path);
-  return parse(doc);
+  return parse(doc, Params{});
 }
 
 void write_params_toml(std::ostream& out, const Params& p, std::string_view header_comment) {

@@ -183,7 +183,9 @@ std::string check_params(const Params& p);
 /// Loads a params file: top-level keys named as in SPEC §7 (unset keys keep the paper's
 /// defaults) and an optional free-form [meta] table. Throws ConfigError.
 Params load_params(const std::string& path);
-Params parse_params(std::string_view text, const std::string& name);
+/// The same from TOML text (`name` stands for the file in messages), starting from `base`: keys
+/// not in the text keep base's values, and the cross constraints are checked on the result.
+Params parse_params(std::string_view text, const std::string& name, const Params& base = Params{});
 
 /// Writes every parameter as a params file that load_params reads back to the same values.
 void write_params_toml(std::ostream& out, const Params& p, std::string_view header_comment = {});

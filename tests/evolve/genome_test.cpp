@@ -180,5 +180,33 @@ TEST(Genome, UnrepairableCandidatesKeepTheirViolation) {
   EXPECT_NE(d.violation.find("theta_soft"), std::string::npos) << d.violation;
 }
 
+TEST(Genome, DecodeValuesRoundsToTheGridAndRepairs) {
+  Gene t0 = gene("T_explore0");
+  t0.lo = 200;
+  t0.hi = 3000;
+  t0.step = 50;
+  Gene pt = gene("p_turn");
+  pt.lo = 0.002;
+  pt.hi = 0.2;
+  pt.log = true;
+  const Genome g = genome_of({t0, pt});
+  const Decoded d = decode_values(g, std::vector<double>{761, 0.0123456789012345});
+  EXPECT_EQ(d.params.t_explore0, 750.0);        // 200 + 11 * 50, the nearest grid point
+  EXPECT_EQ(d.params.p_turn, 0.0123456789012);  // 12 significant digits, as params files keep
+  EXPECT_EQ(decode_values(g, std::vector<double>{5000, 1.0}).params.t_explore0, 3000.0);  // clamped
+  // the value a decode of [0,1]^n gives comes back unchanged
+  const Decoded x = decode(g, std::vector<double>{0.37, 0.81});
+  const Decoded v = decode_values(g, std::vector<double>{x.params.t_explore0, x.params.p_turn});
+  EXPECT_EQ(v.params.t_explore0, x.params.t_explore0);
+  EXPECT_EQ(v.params.p_turn, x.params.p_turn);
+  // cross constraints are repaired as decode() repairs them: theta_soft 90 > theta_hard 60
+  const Decoded r =
+      decode_values(genome_of({gene("theta_hard"), gene("theta_soft")}), std::vector<double>{60, 90});
+  EXPECT_TRUE(r.repaired);
+  EXPECT_EQ(r.params.theta_soft, 60.0);
+  // a value that is no number is a violation, never simulated
+  EXPECT_NE(decode_values(g, std::vector<double>{std::nan(""), 0.01}).violation, "");
+}
+
 }  // namespace
 }  // namespace swarmpath::evolve

@@ -67,6 +67,23 @@ TEST(Params, FileSetsValuesAndKeepsDefaultsForTheRest) {
   EXPECT_EQ(p.d_sub, 70);  // untouched
 }
 
+TEST(Params, TextOnTopOfABaseKeepsTheBaseForTheRest) {
+  Params base;
+  base.v_max = 12.5;
+  base.theta_hard = 80;
+  const Params p = parse_params("T_lost = 4\n", "replace", base);
+  EXPECT_EQ(p.t_lost, 4);
+  EXPECT_EQ(p.v_max, 12.5);  // the base's, not the default
+  // the cross constraints are checked on the result: theta_soft 75 <= the base's theta_hard 80
+  EXPECT_EQ(parse_params("theta_soft = 75\n", "replace", base).theta_soft, 75);
+  try {
+    parse_params("theta_soft = 85\n", "replace", base);
+    ADD_FAILURE() << "theta_soft 85 > theta_hard 80 accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.key(), "theta_soft") << e.what();
+  }
+}
+
 TEST(Params, WriteThenReadGivesTheSameValues) {
   Params p;
   p.v_max = 17.5;
