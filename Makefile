@@ -12,7 +12,7 @@
 
 JOBS ?= $(shell nproc)
 SOURCES := $(shell git ls-files --cached --others --exclude-standard 'sim/*.cpp' 'sim/*.hpp' 'evolve/*.cpp' 'evolve/*.hpp' 'app/*.cpp' 'app/*.hpp' \
-             'tests/*.cpp' 'tests/*.hpp' 'bench/*.cpp' 'bench/*.hpp' 2>/dev/null)
+             'tests/*.cpp' 'tests/*.hpp' 'bench/*.cpp' 'bench/*.hpp' 'python/*.cpp' 'python/*.hpp' 2>/dev/null)
 
 .PHONY: all build run test asan bench format format-check clean verify-genomes benchmark
 

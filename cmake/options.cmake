@@ -4,7 +4,9 @@ target_compile_options(swarm_options INTERFACE
   -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wimplicit-fallthrough -Wold-style-cast
   -Wnon-virtual-dtor
   # determinism: no fused multiply-add contraction, no fast-math, no -march=native
-  -ffp-contract=off)
+  -ffp-contract=off
+  # position-independent code (for the Python module) that still inlines and calls directly
+  -fno-semantic-interposition)
 
 if(SWARM_WERROR)
   set(CMAKE_COMPILE_WARNING_AS_ERROR ON)

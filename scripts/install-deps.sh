@@ -17,6 +17,10 @@ packages=(
   zlib1g-dev              # recordings (.swrec) are zlib-compressed
   chromium nodejs         # the browser tests of the viewer and report (headless, DevTools protocol)
   libopenmpi-dev openmpi-bin  # the MPI backend: evolve, table and evaluate across a cluster (docs/mpi.md)
+  python3-dev pybind11-dev python3-pybind11   # the Python module
+  python3-pytest          # its tests
+  r-cran-irace            # irace, for `swarmpath irace` and its test
+  python3-optuna          # Optuna, for examples/optuna_tune.py and its test
 )
 
 missing=()

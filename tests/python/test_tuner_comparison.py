@@ -1,0 +1,41 @@
+# SPDX-License-Identifier: MIT
+# bench/tuners/compare.py end to end on the tiny tuning problem (one tuner seed each): every tuner
+# spends at most the config's simulation budget, the finals score every pick and the base params on
+# the same fresh runs, and the report's table and plot come out.
+import json
+import os
+import subprocess
+import sys
+
+from conftest import SOURCE, TINY_TUNE
+
+SCRIPT = str(SOURCE / "bench/tuners/compare.py")
+
+
+def compare(*args):
+    p = subprocess.run([sys.executable, SCRIPT, *args, "--config", TINY_TUNE], capture_output=True, text=True,
+                       env=os.environ, timeout=400)
+    assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-3000:]
+    return p.stdout
+
+
+def test_compare_runs_every_tuner_on_one_budget(sp, tmp_path):
+    out = str(tmp_path / "tuners")
+    tuners = "swarmpath-cmaes,irace,optuna-tpe,optuna-cmaes"
+    compare("run", "--out", out, "--tuners", tuners, "--seeds", "1")
+    assert "done before" in compare("run", "--out", out, "--tuners", "swarmpath-cmaes", "--seeds", "1")
+    compare("finals", "--out", out, "--final-seeds", "3")
+    report = compare("report", "--out", out, "--docs", str(tmp_path / "docs"))
+    budget = sp.EvolveConfig.load(TINY_TUNE).simulation_budget()["total"]
+    for t in tuners.split(","):
+        meta = json.loads(open(os.path.join(out, "runs", f"{t}-s1", "meta.json")).read())
+        assert 0 < meta["simulations"] <= budget, (t, meta)
+        assert f"| {t} | 1 |" in report
+    finals = json.loads(open(os.path.join(out, "finals.json")).read())
+    assert set(finals["picks"]) == {"base"} | {f"{t}-s1" for t in tuners.split(",")}
+    # the base params on the final cases, as the Objective scores them
+    config = sp.EvolveConfig.load(TINY_TUNE)
+    cases = [sp.Case(s, k, seed) for k, (s, seed) in enumerate(finals["cases"])]
+    assert sp.Objective(config).evaluate(config.base, cases)["fitness"] == finals["picks"]["base"]["fitness"]
+    svg = open(tmp_path / "docs" / "tuners.svg").read()
+    assert svg.startswith("<svg") and "base params" in svg and "irace" in svg
