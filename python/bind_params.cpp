@@ -5,7 +5,7 @@
 #include <sstream>
 
 #include "bindings.hpp"
-#include "evolve/checkpoint.hpp"
+#include "evolve/atomic_write.hpp"
 #include "evolve/params_export.hpp"
 #include "sim/params.hpp"
 

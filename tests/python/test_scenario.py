@@ -36,3 +36,13 @@ def test_bad_scenario_names_file_line_key_as_the_cli(sp, tmp_path):
     with pytest.raises(sp.ConfigError) as e:
         sp.Scenario.load(SHORT_CHAIN).with_robots(100000)
     assert e.value.file == "robots"
+
+
+def test_toml_text_and_pickle_round_trip(sp):
+    import pickle
+
+    s = sp.Scenario.load(str(SOURCE / "configs/scenarios/paper/env4.toml")).with_robots(30)
+    for back in (sp.Scenario.parse(s.to_toml()), pickle.loads(pickle.dumps(s))):
+        assert back.robots == 30 and back.name == s.name and back.max_ticks == s.max_ticks
+        assert sp.evaluate(sp.Params(), back, seed=4, max_ticks=300) == {
+            **sp.evaluate(sp.Params(), s, seed=4, max_ticks=300), "scenario_file": back.file}
