@@ -12,6 +12,7 @@
 #include "app/experiment.hpp"
 #include "app/table_run.hpp"
 #include "bindings.hpp"
+#include "evolve/batch.hpp"
 #include "sim/config_error.hpp"
 #include "sim/step.hpp"
 
@@ -117,16 +118,23 @@ py::list evaluate_many(const py::iterable& items, int threads) {
   const int n_threads = threads_or_all(threads, "evaluate_many");
   std::vector<Job> jobs;
   for (const py::handle h : items) jobs.push_back(job_from(h, jobs.size()));
-  std::vector<app::SimJob> sims;
-  for (const Job& j : jobs) sims.push_back({&j.params, &j.scenario, j.mode, j.seed});
-  std::vector<sim::Metrics> metrics;
+  // one batch on this process's threads (the BatchEvaluator that table and evolve use)
+  evolve::SimBatch batch;
   std::map<const sim::Scenario*, std::optional<double>> astar;
+  for (const Job& j : jobs) {
+    // one params set and one scenario per job; `jobs` outlives the batch, so the scenario is lent
+    const std::uint32_t pi = batch.add_params(j.params);
+    batch.scenarios.emplace_back(&j.scenario, [](const sim::Scenario*) {});
+    batch.tasks.push_back({pi, static_cast<std::uint32_t>(batch.scenarios.size() - 1), j.mode, j.seed});
+  }
+  std::vector<sim::Metrics> metrics;
   {
     const py::gil_scoped_release free;
     for (const Job& j : jobs) {
       if (!astar.contains(j.arena)) astar[j.arena] = app::astar8_tu(j.scenario);
     }
-    metrics = app::run_jobs(sims, n_threads);
+    evolve::ThreadPool pool(n_threads);
+    metrics = pool.run(batch);
   }
   py::list out;
   for (std::size_t i = 0; i < jobs.size(); ++i) {
@@ -152,7 +160,8 @@ py::object table(const std::vector<std::string>& scenarios, const std::vector<in
   app::TableOutcome outcome;
   {
     const py::gil_scoped_release free;
-    outcome = app::run_table(plan);
+    evolve::ThreadPool pool(plan.threads);
+    outcome = app::run_table(plan, pool);
   }
   return to_python(outcome.json);
 }
