@@ -25,7 +25,8 @@ TablePlan plan_table(const TableRequest& r) {
   return plan;
 }
 
-TableOutcome run_table(const TablePlan& plan, evolve::BatchEvaluator& evaluator, const GridProgress& progress) {
+TableOutcome run_table(const TablePlan& plan, evolve::BatchEvaluator& evaluator,
+                       const GridProgress& progress) {
   TableOutcome out;
   const sim::Params& p = plan.request.params;
   out.runs = run_grid(plan.scenarios, plan.grid, p, evaluator, progress);

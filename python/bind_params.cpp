@@ -83,9 +83,9 @@ void bind_params(py::module_& m) {
       "The controller parameters of SPEC §7 (rows 1-42) and the options beyond it, as a "
       "params file holds them. Immutable in use: replace() returns a new one. Units as in "
       "the params files: cm, ticks (0.1 s), degrees.");
-  c.def(py::init<>(), "The defaults (genomes/paper.toml's values).")
+  c.def(py::init<>(), "The defaults (genomes/default.toml's values).")
       .def_static(
-          "defaults", [] { return sim::Params{}; }, "The defaults (genomes/paper.toml's values).")
+          "defaults", [] { return sim::Params{}; }, "The defaults (genomes/default.toml's values).")
       .def_static(
           "load", &sim::load_params, py::arg("path"),
           "Loads a params file (TOML, SPEC §7 names). Raises ConfigError (a ValueError) naming the file, "

@@ -54,7 +54,7 @@ py::dict evaluate(const sim::Params& p, const sim::Scenario& scenario, const std
     astar = app::astar8_tu(s);
     m = sim::evaluate(p, s, md, seed);
   }
-  return to_python(app::simulation_json(s, md, seed, m, astar));
+  return to_python(app::simulation_json(p, s, md, seed, m, astar));
 }
 
 struct Job {
@@ -138,8 +138,8 @@ py::list evaluate_many(const py::iterable& items, int threads) {
   }
   py::list out;
   for (std::size_t i = 0; i < jobs.size(); ++i) {
-    out.append(to_python(app::simulation_json(jobs[i].scenario, jobs[i].mode, jobs[i].seed, metrics[i],
-                                              astar[jobs[i].arena])));
+    out.append(to_python(app::simulation_json(jobs[i].params, jobs[i].scenario, jobs[i].mode, jobs[i].seed,
+                                              metrics[i], astar[jobs[i].arena])));
   }
   return out;
 }

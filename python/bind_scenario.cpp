@@ -69,14 +69,19 @@ void bind_scenario(py::module_& m) {
       .def_property_readonly(
           "goal", [](const sim::Scenario& s) { return pair(s.goal); }, "The goal beacon (x, y) [m].")
       .def(
-          "to_toml", [](const sim::Scenario& s, const std::string& header) { return sim::write_scenario_toml(s, header); },
-          py::arg("header") = "", "The scenario file text; Scenario.parse reads it back to the same scenario.")
-      .def(py::pickle([](const sim::Scenario& s) { return py::make_tuple(sim::write_scenario_toml(s), s.file); },
-                      [](const py::tuple& t) {
-                        sim::Scenario s = sim::parse_scenario(t[0].cast<std::string>(), "<pickle>");
-                        s.file = t[1].cast<std::string>();
-                        return s;
-                      }))
+          "to_toml",
+          [](const sim::Scenario& s, const std::string& header) {
+            return sim::write_scenario_toml(s, header);
+          },
+          py::arg("header") = "",
+          "The scenario file text; Scenario.parse reads it back to the same scenario.")
+      .def(py::pickle(
+          [](const sim::Scenario& s) { return py::make_tuple(sim::write_scenario_toml(s), s.file); },
+          [](const py::tuple& t) {
+            sim::Scenario s = sim::parse_scenario(t[0].cast<std::string>(), "<pickle>");
+            s.file = t[1].cast<std::string>();
+            return s;
+          }))
       .def("__repr__", [](const sim::Scenario& s) {
         return "Scenario(" + s.name + ", " + std::string(sim::to_string(s.env_class)) + ", " +
                std::to_string(s.robots) + " robots, " + std::to_string(s.sim.max_ticks) + " ticks, file " +

@@ -19,7 +19,7 @@ formation and task allocation of Ratnabala, Peter and Charles, and the tools to 
 The same C++ as the `swarmpath` command line, so the same inputs give the same numbers:
 
     import swarmpath
-    p = swarmpath.Params.load("genomes/paper.toml").replace(v_max=25, T_explore0=1500)
+    p = swarmpath.Params.load("genomes/default.toml").replace(v_max=25, T_explore0=1500)
     s = swarmpath.Scenario.load("configs/scenarios/paper/env4.toml")
     r = swarmpath.evaluate(p, s, mode="pf", seed=1, robots=60)   # the fields of `simulate --json`
     rs = swarmpath.evaluate_many([dict(params=p, scenario=s, seed=k) for k in range(8)], threads=2)
