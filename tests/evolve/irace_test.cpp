@@ -20,7 +20,7 @@ using testing::scratch;
 using testing::source;
 using testing::write_text;
 
-EvolveConfig tiny() { return load_evolve_config(source("tests/data/tiny_tune.toml")); }
+EvolveConfig tiny() { return load_evolve_config(source("tests/data/tune/tiny_tune.toml")); }
 
 TEST(SimulationBudget, CandidatesTimesCasesPlusTheFinalists) {
   const EvolveConfig c = tiny();  // CMA-ES on 2 genes: population 4 + floor(3 ln 2) = 6

@@ -11,7 +11,7 @@ import pytest
 SOURCE = pathlib.Path(os.environ.get("SWARMPATH_SOURCE_DIR", pathlib.Path(__file__).resolve().parents[2]))
 CLI = os.environ.get("SWARMPATH_CLI", str(SOURCE / "build" / "release" / "swarmpath"))
 SHORT_CHAIN = str(SOURCE / "tests" / "data" / "short_chain.toml")
-TINY_TUNE = str(SOURCE / "tests" / "data" / "tiny_tune.toml")
+TINY_TUNE = str(SOURCE / "tests" / "data" / "tune" / "tiny_tune.toml")
 
 # simulate --json fields that measure the machine, not the run
 WALL_CLOCK_FIELDS = ("wall_seconds", "robot_ticks_per_second")
