@@ -3,6 +3,7 @@
 
 #include <sstream>
 
+#include "cli_options.hpp"
 #include "common.hpp"
 #include "evolve/params_export.hpp"
 #include "sim/config_error.hpp"
@@ -19,7 +20,7 @@ TablePlan plan_table(const TableRequest& r) {
   plan.modes = path_modes(r.mode);
   for (const std::string& f : scenario_files(r.scenarios))
     plan.scenarios.push_back(scenario_with_overrides(f, {}, r.ticks));
-  plan.threads = thread_count(r.threads);
+  plan.threads = threads_or_all(r.threads > 0 ? std::optional<int>(r.threads) : std::nullopt);
   plan.astar8 = astar8_lengths(plan.scenarios);  // the A* baseline of each scenario, once
   plan.grid = make_grid(plan.scenarios.size(), r.robots, plan.modes, r.seeds, r.seed_base);
   return plan;
