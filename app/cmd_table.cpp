@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// swarmpath table: a grid of scenario x robots x seed in parallel, written as the paper's table.
+// swarmpath table: a grid of scenario x robots x seed in parallel, written as the paper's table
+// (the grid and its summary are table_run's, which the Python module's table() calls too).
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -12,15 +13,12 @@
 #include "commands.hpp"
 #include "common.hpp"
 #include "evolve/atomic_write.hpp"
-#include "evolve/params_export.hpp"
 #include "evolve/path_collision.hpp"
 #include "experiment.hpp"
 #include "fault_options.hpp"
 #include "recording_file.hpp"
-#include "sim/astar.hpp"
-#include "sim/config_error.hpp"
-#include "table_output.hpp"
-#include "table_report.hpp"
+#include "sim/recorder.hpp"
+#include "table_run.hpp"
 
 namespace swarmpath::app {
 
@@ -77,59 +75,37 @@ void record_failures(const std::vector<sim::Scenario>& scenarios, const std::vec
   }
 }
 
-int run_table(const TableOptions& o, const evolve::EvaluatorFactory& evaluators, std::ostream& out,
-              std::ostream& err) {
-  if (o.seeds < 1 || o.seeds > 100000) throw sim::ConfigError("--seeds", 0, "", "must lie in [1, 100000]");
-  if (o.robots.empty()) throw sim::ConfigError("--robots", 0, "", "give at least one robot count");
-  check_distinct_robots("--robots", o.robots);
-  check_seed_range("--seed-base", o.seed_base, o.seeds);
-  const std::vector<sim::Mode> modes = path_modes(o.mode);
-  const bool both = modes.size() == 2;
-  const std::vector<std::string> files = scenario_files(o.scenarios);
+int table_command(const TableOptions& o, const evolve::EvaluatorFactory& evaluators, std::ostream& out,
+                  std::ostream& err) {
+  TableRequest r;
+  r.scenarios = o.scenarios;
+  r.robots = o.robots;
+  r.seeds = o.seeds;
+  r.seed_base = o.seed_base;
+  r.mode = o.mode;
+  r.params = params_or_defaults(o.params);
+  r.params_file = o.params;
+  r.ticks = o.ticks;
+  r.threads = o.threads;
+  r.faults = o.faults;
+  const TablePlan plan = plan_table(r);
   std::vector<evolve::NamedPath> inputs = {{"--params", o.params}};
-  for (const std::string& f : files) inputs.push_back({"--scenarios", f});
+  for (const std::string& f : plan.files) inputs.push_back({"--scenarios", f});
   evolve::check_output_paths(inputs, {{"--json", o.json}, {"--csv", o.csv}, {"--md", o.markdown}});
-  const sim::Params p = params_or_defaults(o.params);
-  std::vector<sim::Scenario> scenarios;
-  for (const std::string& f : files)
-    scenarios.push_back(with_fault_options(scenario_with_overrides(f, {}, o.ticks), o.faults));
-  note_benchmark_arenas(scenarios, err);
-  check_distinct_scenarios("--scenarios", files, scenarios);
-  const int threads = threads_or_all(o.threads);
-  const std::vector<double> astar8 = astar8_lengths(scenarios);  // the A* baseline of each scenario, once
+  note_benchmark_arenas(plan.scenarios, err);
 
-  const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
-  const std::vector<GridCase> grid = make_grid(scenarios.size(), o.robots, modes, o.seeds, o.seed_base);
+  const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(plan.threads);
   const bool tty = stderr_is_terminal();
   const Stopwatch clock;
-  const GridProgress progress = grid_progress(err, tty);
-  err << "swarmpath table: " << scenarios.size() << " scenarios x " << o.robots.size() << " robot counts x "
-      << modes.size() << " modes x " << o.seeds << " seeds = " << grid.size() << " runs, mode " << o.mode
-      << ", " << evaluator->describe() << "\n";
-  const std::vector<GridRun> runs = run_grid(scenarios, grid, p, *evaluator, progress);
+  err << "swarmpath table: " << plan.scenarios.size() << " scenarios x " << o.robots.size()
+      << " robot counts x " << plan.modes.size() << " modes x " << o.seeds << " seeds = " << plan.grid.size()
+      << " runs, mode " << o.mode << ", " << evaluator->describe() << "\n";
+  const TableOutcome outcome = run_table(plan, *evaluator, grid_progress(err, tty));
   if (tty) err << "\n";
   err << "  done in " << fixed(clock.seconds(), 1) << " s: " << evaluator->summary() << "\n";
-  if (!o.record_failures.empty()) record_failures(scenarios, runs, p, o, threads, err);
+  if (!o.record_failures.empty())
+    record_failures(plan.scenarios, outcome.runs, r.params, o, plan.threads, err);
 
-  std::ostringstream md;
-  md << "Controller: the " << evolve::controller_text(p) << (o.params.empty() ? "" : ", " + o.params)
-     << "; the paper's figures in parentheses.\n\n";
-  nlohmann::ordered_json json;
-  if (both) {
-    const Comparison c = compare(
-        summarise(scenarios, astar8, runs_of(runs, sim::Mode::kPathFormation), sim::Mode::kPathFormation),
-        summarise(scenarios, astar8, runs_of(runs, sim::Mode::kTaskAllocation), sim::Mode::kTaskAllocation));
-    write_markdown(md, c);
-    if (!o.json.empty()) json = comparison_json(scenarios, astar8, runs, c);
-  } else {
-    const TableReport report = summarise(scenarios, astar8, runs, modes[0]);
-    write_markdown(md, report);
-    if (!o.json.empty()) json = table_json(scenarios, astar8, runs, report);
-  }
-  if (!o.json.empty()) {
-    json["params"] = o.params;
-    json["controller"] = evolve::controller_json(p);
-  }
   // every output that can be written is (a full disk loses one file, not the others)
   int code = kExitOk;
   const auto save = [&](const std::string& path, const std::function<void(std::ostream&)>& write) {
@@ -141,10 +117,10 @@ int run_table(const TableOptions& o, const evolve::EvaluatorFactory& evaluators,
       code = kExitFailure;
     }
   };
-  save(o.json, [&](std::ostream& f) { f << json.dump(2) << "\n"; });
-  save(o.csv, [&](std::ostream& f) { write_runs_csv(f, scenarios, astar8, runs); });
-  save(o.markdown, [&](std::ostream& f) { f << md.str(); });
-  out << md.str();
+  save(o.json, [&](std::ostream& f) { f << outcome.json.dump(2) << "\n"; });
+  save(o.csv, [&](std::ostream& f) { f << table_runs_csv(plan, outcome); });
+  save(o.markdown, [&](std::ostream& f) { f << outcome.markdown; });
+  out << outcome.markdown;
   return code;
 }
 
@@ -177,8 +153,9 @@ Runner add_table(CLI::App& app, const evolve::EvaluatorFactory& evaluators) {
   app.add_option("--record-every", o->record_every,
                  "Ticks between recorded frames (default: one second of simulated time, 10 ticks)");
   add_fault_options(app, o->faults);
-  return
-      [o, evaluators](std::ostream& out, std::ostream& err) { return run_table(*o, evaluators, out, err); };
+  return [o, evaluators](std::ostream& out, std::ostream& err) {
+    return table_command(*o, evaluators, out, err);
+  };
 }
 
 }  // namespace swarmpath::app

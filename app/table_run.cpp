@@ -15,12 +15,16 @@ namespace swarmpath::app {
 TablePlan plan_table(const TableRequest& r) {
   if (r.seeds < 1 || r.seeds > 100000) throw sim::ConfigError("--seeds", 0, "", "must lie in [1, 100000]");
   if (r.robots.empty()) throw sim::ConfigError("--robots", 0, "", "give at least one robot count");
+  check_distinct_robots("--robots", r.robots);
+  check_seed_range("--seed-base", r.seed_base, r.seeds);
   TablePlan plan;
   plan.request = r;
   plan.modes = path_modes(r.mode);
-  for (const std::string& f : scenario_files(r.scenarios))
-    plan.scenarios.push_back(scenario_with_overrides(f, {}, r.ticks));
-  plan.threads = threads_or_all(r.threads > 0 ? std::optional<int>(r.threads) : std::nullopt);
+  plan.files = scenario_files(r.scenarios);
+  for (const std::string& f : plan.files)
+    plan.scenarios.push_back(with_fault_options(scenario_with_overrides(f, {}, r.ticks), r.faults));
+  check_distinct_scenarios("--scenarios", plan.files, plan.scenarios);
+  plan.threads = threads_or_all(r.threads);
   plan.astar8 = astar8_lengths(plan.scenarios);  // the A* baseline of each scenario, once
   plan.grid = make_grid(plan.scenarios.size(), r.robots, plan.modes, r.seeds, r.seed_base);
   return plan;
@@ -30,9 +34,11 @@ TableOutcome run_table(const TablePlan& plan, evolve::BatchEvaluator& evaluator,
                        const GridProgress& progress) {
   TableOutcome out;
   const sim::Params& p = plan.request.params;
+  const std::string& file = plan.request.params_file;
   out.runs = run_grid(plan.scenarios, plan.grid, p, evaluator, progress);
   std::ostringstream md;
-  md << "Controller: the " << evolve::controller_text(p) << "; the paper's figures in parentheses.\n\n";
+  md << "Controller: the " << evolve::controller_text(p) << (file.empty() ? "" : ", " + file)
+     << "; the paper's figures in parentheses.\n\n";
   if (plan.modes.size() == 2) {
     const Comparison c =
         compare(summarise(plan.scenarios, plan.astar8, runs_of(out.runs, sim::Mode::kPathFormation),
@@ -46,7 +52,7 @@ TableOutcome run_table(const TablePlan& plan, evolve::BatchEvaluator& evaluator,
     write_markdown(md, report);
     out.json = table_json(plan.scenarios, plan.astar8, out.runs, report);
   }
-  out.json["params"] = "";
+  out.json["params"] = file;
   out.json["controller"] = evolve::controller_json(p);
   out.markdown = md.str();
   return out;

@@ -13,6 +13,7 @@
 
 #include "evolve/batch.hpp"
 #include "experiment.hpp"
+#include "fault_options.hpp"
 #include "sim/params.hpp"
 #include "sim/scenario.hpp"
 
@@ -25,18 +26,21 @@ struct TableRequest {
   std::uint64_t seed_base = 1;        ///< seeds seed_base ... seed_base + seeds - 1
   std::string mode = "pf";            ///< pf | ta | both
   sim::Params params;                 ///< the controller's parameters
+  std::string params_file;            ///< the file they came from, named in the table ("": in memory)
   std::optional<std::int64_t> ticks;  ///< overrides every scenario's max_ticks
-  int threads = 0;                    ///< 0: all cores
+  std::optional<int> threads;         ///< unset: all cores
+  FaultOptions faults;                ///< override every scenario's [faults] keys
 };
 
 /// A checked request: its scenarios loaded, their A* lengths, the grid to run.
 struct TablePlan {
   TableRequest request;
   std::vector<sim::Mode> modes;
+  std::vector<std::string> files;  ///< the scenario files, folders expanded
   std::vector<sim::Scenario> scenarios;
   std::vector<double> astar8;  ///< per scenario [TU]; NaN without a path
   std::vector<GridCase> grid;
-  int threads = 1;  ///< the request's, 0 resolved to all cores
+  int threads = 1;  ///< the request's, unset resolved to all cores
 };
 
 struct TableOutcome {
@@ -45,11 +49,11 @@ struct TableOutcome {
   nlohmann::ordered_json json;  ///< as `swarmpath table --json` writes it
 };
 
-/// Checks the request (ConfigError naming the option), loads the scenarios, computes A*.
+/// Checks the request (ConfigError naming the option), loads the scenarios with the fault options
+/// applied, computes A*.
 TablePlan plan_table(const TableRequest& r);
 
-/// Runs the plan's grid on `evaluator` and summarises it (as `table` does with the params given in
-/// memory: the JSON's "params" file is "").
+/// Runs the plan's grid on `evaluator` and summarises it.
 TableOutcome run_table(const TablePlan& plan, evolve::BatchEvaluator& evaluator,
                        const GridProgress& progress = {});
 
