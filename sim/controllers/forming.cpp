@@ -65,6 +65,14 @@ bool forming_timeout(const PfContext& c) { return static_cast<double>(c.m.t_stat
 
 bool forming_timeout_target_seen(const PfContext& c) { return forming_timeout(c) && c.m.target.visible; }
 
+// R (form_retries): a robot that lost its target is no use standing ORANGE for the rest of the run
+// (RECOVERY is final, SPEC §2.3 row 14); while it has retries left it goes home along its own way
+// out, rests, and its next trip starts at its sighting of the chain (site_fidelity)
+bool lost_target_may_retry(const PfContext& c) {
+  if (static_cast<double>(c.m.form_retries) >= c.p.form_retries) return false;
+  return target_lost_in_visible_range(c) || (forming_timeout(c) && !c.m.target.visible);
+}
+
 void take_target(const PfContext& c, PfMemory& m) {
   const bool goal = goal_in_reach(c);
   m.target = follow(goal ? *c.sight.goal : *c.sight.red_near, c.in.pose);
@@ -83,6 +91,11 @@ void retarget(const PfContext& c, PfMemory& m) {
 }
 
 void target_becomes_parent(const PfContext&, PfMemory& m) { m.parent = m.target; }
+
+void go_home_to_retry(const PfContext&, PfMemory& m) {
+  ++m.form_retries;
+  m.target = Tracked{};
+}
 
 void next_form_leg(const Percept& in, const Params& p, Vec2 nest, PfMemory& m) {
   if (m.form_leg == FormLeg::kToTarget && m.target.visible &&

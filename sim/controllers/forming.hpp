@@ -19,6 +19,7 @@ bool back_at_view_edge(const PfContext& c);             ///< #7a [R]
 bool target_lost_in_visible_range(const PfContext& c);  ///< #7, label f
 bool forming_timeout_target_seen(const PfContext& c);   ///< #8a
 bool forming_timeout(const PfContext& c);               ///< #8b
+bool lost_target_may_retry(const PfContext& c);         ///< #7h [R]: #7 or #8b, form_retries left
 
 /// the goal beacon within d_detect, and (single_child) no robot in view claims it
 bool goal_in_reach(const PfContext& c);
@@ -27,6 +28,7 @@ bool goal_in_reach(const PfContext& c);
 void take_target(const PfContext& c, PfMemory& m);  ///< #1: the goal if in reach, else the RED subgoal
 void retarget(const PfContext& c, PfMemory& m);     ///< #5r: the RED subgoal nearer the nest
 void target_becomes_parent(const PfContext& c, PfMemory& m);  ///< #5-#8: stop as the subgoal
+void go_home_to_retry(const PfContext& c, PfMemory& m);       ///< #7h [R]: one retry spent, home
 
 /// The forming robot's leg, after perception and before the table: at its target (within
 /// d_detect) it backs off; having lost it far enough away, nearer the nest, it goes back to where it

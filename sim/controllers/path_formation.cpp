@@ -89,9 +89,10 @@ namespace {
 // SPEC §2.3, in its order (paper Table 2 labels where they exist). For each state the first row
 // whose guard holds fires; rows 6, 8, 9 and 13 are split where the SPEC lists two conditions. Rows
 // with a letter or a number past 14 are [R] (docs/CHOICES.md): #1h return_finds, #5r retarget_nearer,
-// #7a stop_at_view_edge, #15-#16 chain_bypass, #17 relink_recovery, #18-#20 chain_repair (before
-// the rows that would act on a gone neighbour).
-const std::array<PfTransition, 33> kTable{{
+// #7a stop_at_view_edge, #7h form_retries (rows #7 and #8b go home instead, docs/detours.md),
+// #15-#16 chain_bypass, #17 relink_recovery, #18-#20 chain_repair (before the rows that would act on
+// a gone neighbour).
+const std::array<PfTransition, 34> kTable{{
   {PfState::kExploring,      found_goal_or_subgoal,        PfState::kSubgoalForming, take_target,           "#1",  "c"},
   {PfState::kExploring,      exploration_time_over,        PfState::kReturnToNest,   nullptr,               "#2",  "b"},
   {PfState::kReturnToNest,   found_on_the_way_home,        PfState::kSubgoalForming, take_target,           "#1h", "c"},
@@ -102,6 +103,7 @@ const std::array<PfTransition, 33> kTable{{
   {PfState::kSubgoalForming, reached_nest_before_d_sub,    PfState::kSubgoal,        target_becomes_parent, "#6a", ""},
   {PfState::kSubgoalForming, entered_recovery_range,       PfState::kSubgoal,        target_becomes_parent, "#6b", ""},
   {PfState::kSubgoalForming, back_at_view_edge,            PfState::kSubgoal,        target_becomes_parent, "#7a", ""},
+  {PfState::kSubgoalForming, lost_target_may_retry,        PfState::kReturnToNest,   go_home_to_retry,      "#7h", ""},
   {PfState::kSubgoalForming, target_lost_in_visible_range, PfState::kRecovery,       nullptr,               "#7",  "f"},
   {PfState::kSubgoalForming, forming_timeout_target_seen,  PfState::kSubgoal,        target_becomes_parent, "#8a", ""},
   {PfState::kSubgoalForming, forming_timeout,              PfState::kRecovery,       nullptr,               "#8b", ""},

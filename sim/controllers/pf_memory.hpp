@@ -117,6 +117,7 @@ struct PfMemory {
   Tracked target;         ///< what the robot backs off from while forming
   bool far_side = false;  ///< found the goal from its far side (farther from the nest than it)
   Vec2 last_saw_target;   ///< the robot's position when it last saw the target [m]
+  int form_retries = 0;   ///< form_retries: how often it has lost its target and gone home (row #7h)
   // in the chain (rows #9-#17)
   Tracked parent;  ///< goal-side reference (the goal beacon or a robot)
   Tracked child;   ///< nest-side reference (the nest beacon or a robot)

@@ -387,6 +387,39 @@ TEST(PfTable, Row8StallGuard) {
   EXPECT_EQ(unseen.state, PfState::kRecovery);
 }
 
+// R: form_retries (off by default; docs/detours.md). A forming robot that loses its target (row #7,
+// or row #8b's time-out with the target out of view) goes home instead of standing ORANGE for the
+// rest of the run, at most form_retries times; a time-out with the target in view still stops (#8a).
+TEST(PfTable, Row7hLostTargetGoesHomeWhileRetriesLast) {
+  const auto lost_it = [] {
+    PfMemory m = forming({1.05, 0.0});
+    m.target.unseen = 2;             // lost after this tick's miss (T_lost = 3)
+    m.last_saw_target = {0.9, 0.0};  // close to it when lost: no view-edge stop
+    return m;
+  };
+  Params p;
+  p.form_retries = 2;
+  PfMemory m = lost_it();
+  EXPECT_EQ(fire(m, Reading{}, p), "#7h");
+  EXPECT_EQ(m.state, PfState::kReturnToNest);
+  EXPECT_EQ(m.form_retries, 1);
+  m = lost_it();
+  m.form_retries = 2;  // none left: RECOVERY, as SPEC
+  EXPECT_EQ(fire(m, Reading{}, p), "#7");
+  EXPECT_EQ(m.state, PfState::kRecovery);
+  m = lost_it();
+  EXPECT_EQ(fire(m, Reading{}), "#7");  // off (0): RECOVERY at once
+  PfMemory timed_out = forming({0.40, 0.0});
+  timed_out.t_state = 600;
+  timed_out.last_saw_target = {0.3, 0.0};
+  EXPECT_EQ(fire(timed_out, Reading{}, p), "#7h");
+  PfMemory seen = forming({0.40, 0.0});
+  seen.t_state = 600;
+  Reading r;
+  r.add(Led::kRed, 7, 0, 40);
+  EXPECT_EQ(fire(seen, r, p), "#8a");
+}
+
 TEST(PfTable, Row9aSubgoalSeesTheNest) {  // label g
   PfMemory m = in_state(PfState::kSubgoal);
   m.parent = tracked(7, {0.7, 0.0});
