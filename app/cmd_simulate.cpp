@@ -127,11 +127,7 @@ int run_simulate(const SimulateOptions& o, std::ostream& out, std::ostream& err)
   std::optional<sim::AStarResult> a8;
   try {
     a8 = sim::astar(s, {sim::Connectivity::kEight});
-    if (!a8->found) {
-      err << "note: the A* baseline (SPEC 4.5) finds no path from the nest to the goal: a passage is "
-             "narrower "
-             "than a robot\n";
-    }
+    if (!a8->found) err << "note: " << sim::kNoAStarPath << "\n";
   } catch (const sim::ConfigError& e) {
     err << "note: no A* baseline: " << e.what() << "\n";
   }

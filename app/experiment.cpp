@@ -133,16 +133,7 @@ void check_distinct_robots(const std::string& option, const std::vector<int>& ro
 
 std::vector<double> astar8_lengths(const std::vector<sim::Scenario>& scenarios) {
   std::vector<double> out;
-  for (const sim::Scenario& s : scenarios) {
-    const sim::AStarResult a = sim::astar(s);
-    if (!a.found) {
-      throw sim::ConfigError(s.file, 0, "",
-                             "the A* baseline (SPEC 4.5: a 1 cm grid, cells within 8.5 cm of an obstacle "
-                             "blocked) finds no path from the nest to the goal: a passage is narrower than "
-                             "a robot; path / A* would be undefined");
-    }
-    out.push_back(sim::to_tu(a.length_m));
-  }
+  for (const sim::Scenario& s : scenarios) out.push_back(sim::astar8_baseline_tu(s, s.file));
   return out;
 }
 

@@ -68,15 +68,7 @@ SwarmObjective::SwarmObjective(const EvolveConfig& c)
   const auto add = [&](const ScenarioRef& ref, bool held_out) {
     sim::Scenario s = sim::load_scenario(ref.path);
     if (c.evaluation.max_ticks) s = sim::with_max_ticks(s, *c.evaluation.max_ticks, c.file);
-    const sim::AStarResult a = sim::astar(s);
-    if (!a.found) {
-      // path / A* (the fitness's path term) would be undefined for every run
-      throw sim::ConfigError(ref.path, 0, "",
-                             "the A* baseline (SPEC 4.5: a 1 cm grid, cells within 8.5 cm of an obstacle "
-                             "blocked) finds no path from the nest to the goal: a passage is narrower than a "
-                             "robot");
-    }
-    const double astar = sim::to_tu(a.length_m);
+    const double astar = sim::astar8_baseline_tu(s, ref.path);
     const std::vector<int> robots =
         c.evaluation.robots.empty() ? std::vector<int>{s.robots} : c.evaluation.robots;
     for (const int n : robots) {

@@ -153,4 +153,10 @@ AStarResult astar(const Scenario& s, const AStarOptions& o) {
   return result;
 }
 
+double astar8_baseline_tu(const Scenario& s, const std::string& file) {
+  const AStarResult a = astar(s);
+  if (!a.found) throw ConfigError(file, 0, "", std::string(kNoAStarPath) + "; path / A* would be undefined");
+  return to_tu(a.length_m);
+}
+
 }  // namespace swarmpath::sim

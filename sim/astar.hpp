@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "scenario.hpp"
@@ -31,6 +32,15 @@ struct AStarResult {
 inline constexpr std::int64_t kMaxAStarCells = 60'000'000;
 
 AStarResult astar(const Scenario& s, const AStarOptions& options = {});
+
+/// What an arena without an A* path is told (simulate's note, the error below).
+inline constexpr const char* kNoAStarPath =
+    "the A* baseline (SPEC 4.5: a 1 cm grid, cells within 8.5 cm of an obstacle blocked) finds no path "
+    "from the nest to the goal: a passage is narrower than a robot";
+
+/// The A*-8 baseline length in TU (SPEC §4.5), for path / A* (table, evaluate, the fitness's path
+/// term); throws ConfigError naming `file` when there is no path: path / A* would be undefined.
+double astar8_baseline_tu(const Scenario& s, const std::string& file);
 
 /// Table units of the paper's length column: 1 TU = 10 cm (SPEC §3.2, dm-scale).
 constexpr double to_tu(double metres) { return metres * 10.0; }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "sim/config_error.hpp"
 #include "test_support.hpp"
 
 namespace swarmpath::sim {
@@ -65,6 +66,19 @@ TEST(AStar, NoPathWhenTheGoalIsWalledIn) {
              {{1.5, 0.0}, {0.2, 1.2}, 0.0},
              {{2.5, 0.0}, {0.2, 1.2}, 0.0}};
   EXPECT_FALSE(astar(s).found);
+  // path / A* would be undefined: the baseline is a bad input naming the file
+  try {
+    (void)astar8_baseline_tu(s, "walled.toml");
+    ADD_FAILURE() << "a baseline without a path";
+  } catch (const ConfigError& e) {
+    EXPECT_EQ(e.file(), "walled.toml");
+    EXPECT_NE(std::string(e.what()).find(kNoAStarPath), std::string::npos) << e.what();
+  }
+}
+
+TEST(AStar, TheBaselineIsTheEightConnectedLengthInTableUnits) {
+  const Scenario s = load_scenario(test::paper_env(4));
+  EXPECT_EQ(astar8_baseline_tu(s, s.file), to_tu(astar(s, {Connectivity::kEight}).length_m));
 }
 
 }  // namespace
