@@ -9,6 +9,8 @@
 #include <unistd.h>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "app/cli.hpp"
 
 namespace swarmpath::app::cli_support {
@@ -31,6 +33,29 @@ inline std::filesystem::path temp_dir(const std::string& what) {
       std::filesystem::temp_directory_path() / ("swarmpath_" + what + "_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+#ifdef SWARMPATH_SOURCE_DIR
+/// A file of the source tree, e.g. source("tests/data/short_chain.toml").
+inline std::string source(const std::string& rel) { return std::string(SWARMPATH_SOURCE_DIR) + "/" + rel; }
+
+/// The small open arena of the tests (tests/data/short_chain.toml).
+inline std::string short_chain() { return source("tests/data/short_chain.toml"); }
+#endif
+
+/// An empty folder for the running test alone: TMP/swarmpath_<what>_<pid>/<suite>.<test>/<name>.
+inline std::filesystem::path test_scratch(const std::string& what, const std::string& name) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  const std::filesystem::path dir =
+      temp_dir(what) / (std::string(info->test_suite_name()) + "." + info->name()) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+/// Writes `text` to `p`, byte for byte.
+inline void write_file(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
 }
 
 /// The whole text of a file ("" when it cannot be read).

@@ -25,29 +25,12 @@ namespace fs = std::filesystem;
 using Result = cli_support::CliResult;
 using cli_support::cli;
 
-std::string source(const std::string& rel) { return std::string(SWARMPATH_SOURCE_DIR) + "/" + rel; }
-
-std::string short_chain() { return source("tests/data/short_chain.toml"); }
+using cli_support::short_chain;
+using cli_support::source;
 
 std::string env(int k) { return source("configs/scenarios/paper/env" + std::to_string(k) + ".toml"); }
 
-fs::path scratch(const std::string& name) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::temp_directory_path() / ("swarmpath_sanity_test_" + std::to_string(::getpid())) /
-                       (std::string(info->test_suite_name()) + "." + info->name()) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void put(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
+fs::path scratch(const std::string& name) { return cli_support::test_scratch("sanity_test", name); }
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
   const auto pos = text.find(from);
@@ -108,7 +91,8 @@ TEST(Duplicates, AScenarioOrRobotCountListedTwiceIsRefused) {
               short_chain(), "--seeds", "1"},
              {"--scenarios", "twice"});
   // two different scenarios with one name would merge into one row of the table
-  put(dir / "other.toml", replaced(slurp(short_chain()), "goal = [1.8, 0.0]", "goal = [1.7, 0.0]"));
+  cli_support::write_file(dir / "other.toml", replaced(cli_support::read_file(short_chain()),
+                                                       "goal = [1.8, 0.0]", "goal = [1.7, 0.0]"));
   expect_bad(
       {"table", "--scenarios", short_chain(), (dir / "other.toml").string(), "--robots", "4", "--seeds", "1"},
       {"--scenarios", "short_chain", "name"});
@@ -117,15 +101,17 @@ TEST(Duplicates, AScenarioOrRobotCountListedTwiceIsRefused) {
 TEST(PaperNumbers, AreMatchedByTheArenaNotByItsName) {
   const fs::path dir = scratch("paper");
   // env4 with one obstacle moved, still named env4: not the paper's env4
-  put(dir / "env4.toml", replaced(slurp(env(4)), "radius = 0.5", "radius = 0.4"));
+  cli_support::write_file(dir / "env4.toml",
+                          replaced(cli_support::read_file(env(4)), "radius = 0.5", "radius = 0.4"));
   // env1 under another name: the paper's env1 all the same
-  put(dir / "arena-one.toml", replaced(slurp(env(1)), "name = \"env1\"", "name = \"arena-one\""));
+  cli_support::write_file(dir / "arena-one.toml", replaced(cli_support::read_file(env(1)), "name = \"env1\"",
+                                                           "name = \"arena-one\""));
   const fs::path json = dir / "t.json";
   const Result r =
       cli({"table", "--scenarios", (dir / "env4.toml").string(), (dir / "arena-one.toml").string(),
            "--robots", "8", "--seeds", "1", "--ticks", "5", "--json", json.string()});
   ASSERT_EQ(r.code, 0) << r.err;
-  const nlohmann::json j = nlohmann::json::parse(slurp(json));
+  const nlohmann::json j = nlohmann::json::parse(cli_support::read_file(json));
   ASSERT_EQ(j.at("environments").size(), 2u);
   const nlohmann::json& edited = j.at("environments")[0];
   const nlohmann::json& renamed = j.at("environments")[1];
@@ -152,18 +138,20 @@ TEST(PaperNumbers, EachShippedPaperArenaIsItsRow) {  // SPEC §5.1's eight rows
 
 TEST(Outputs, OddCharactersInNamesCannotBreakTheCsvTheMarkdownOrThePictures) {
   const fs::path dir = scratch("names");
-  put(dir / "odd.toml",
-      replaced(slurp(short_chain()), "name = \"short_chain\"", "name = \"a, \\\"b\\\" | <c> & d\""));
+  cli_support::write_file(dir / "odd.toml",
+                          replaced(cli_support::read_file(short_chain()), "name = \"short_chain\"",
+                                   "name = \"a, \\\"b\\\" | <c> & d\""));
   const Result r = cli({"table", "--scenarios", (dir / "odd.toml").string(), "--robots", "4", "--seeds", "1",
                         "--ticks", "5", "--csv", (dir / "t.csv").string()});
   ASSERT_EQ(r.code, 0) << r.err;
-  const std::string csv = slurp(dir / "t.csv");
+  const std::string csv = cli_support::read_file(dir / "t.csv");
   EXPECT_NE(csv.find("\n\"a, \"\"b\"\" | <c> & d\",4,1,"), std::string::npos) << csv;  // RFC 4180 quoting
   EXPECT_NE(r.out.find("| a, \"b\" \\| <c> & d |"), std::string::npos) << r.out;       // the pipe escaped
   const Result s = cli({"simulate", "--scenario", (dir / "odd.toml").string(), "--robots", "4", "--ticks",
                         "1", "--svg", (dir / "odd.svg").string()});
   ASSERT_EQ(s.code, 0) << s.err;
-  EXPECT_NE(slurp(dir / "odd.svg").find("a, &quot;b&quot; | &lt;c&gt; &amp; d"), std::string::npos);
+  EXPECT_NE(cli_support::read_file(dir / "odd.svg").find("a, &quot;b&quot; | &lt;c&gt; &amp; d"),
+            std::string::npos);
 }
 
 TEST(Outputs, ControlCharactersNeverReachAnSvgOrXmlFile) {
@@ -178,7 +166,8 @@ TEST(Outputs, ControlCharactersNeverReachAnSvgOrXmlFile) {
 
 TEST(ResourceLimits, AHeatMapOfTooManyCellsNamesTheOptionAndTheArena) {
   const fs::path dir = scratch("big");
-  put(dir / "big.toml",
+  cli_support::write_file(
+      dir / "big.toml",
       "name = \"big\"\nclass = \"open\"\nnest = [-2.0, 0.0]\ngoal = [2.0, 0.0]\n[arena]\nsize = [2000.0, "
       "2000.0]\n"
       "[deployment]\nsize = [1.0, 1.0]\nrobots = 4\n");
@@ -191,9 +180,9 @@ TEST(ResourceLimits, AHeatMapOfTooManyCellsNamesTheOptionAndTheArena) {
 TEST(Unreachable, AnArenaWhoseAStarBaselineFindsNoPathIsABadInput) {
   // a 16.5 cm slit: wide enough for the load check's conservative grid, too narrow for a robot (17 cm)
   const fs::path dir = scratch("slit");
-  put(dir / "slit.toml", slurp(short_chain()) +
-                             "\n[[box]]\ncenter = [0.0, 1.0825]\nsize = [0.2, 1.835]\n"
-                             "[[box]]\ncenter = [0.0, -0.925]\nsize = [0.2, 1.85]\n");
+  cli_support::write_file(dir / "slit.toml", cli_support::read_file(short_chain()) +
+                                                 "\n[[box]]\ncenter = [0.0, 1.0825]\nsize = [0.2, 1.835]\n"
+                                                 "[[box]]\ncenter = [0.0, -0.925]\nsize = [0.2, 1.85]\n");
   const std::string f = (dir / "slit.toml").string();
   const std::vector<std::string> words = {f, "A* baseline", "no path"};
   expect_bad({"table", "--scenarios", f, "--robots", "4", "--seeds", "1", "--ticks", "5"}, words);

@@ -22,33 +22,16 @@ namespace fs = std::filesystem;
 using Result = cli_support::CliResult;
 using cli_support::cli;
 
-std::string source(const std::string& rel) { return std::string(SWARMPATH_SOURCE_DIR) + "/" + rel; }
+using cli_support::short_chain;
+using cli_support::source;
 
-std::string short_chain() { return source("tests/data/short_chain.toml"); }
-
-fs::path scratch(const std::string& name) {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const fs::path dir = fs::temp_directory_path() / ("swarmpath_output_test_" + std::to_string(::getpid())) /
-                       (std::string(info->test_suite_name()) + "." + info->name()) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+fs::path scratch(const std::string& name) { return cli_support::test_scratch("output_test", name); }
 
 std::string joined(const std::vector<std::string>& args) {
   std::string s;
   for (const std::string& a : args) s += (s.empty() ? "" : " ") + a;
   return s;
 }
-
-void put(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 // a standard output on a full disk: every write fails
 class FullBuffer : public std::streambuf {
@@ -74,7 +57,7 @@ std::string tiny_evolve_config(const fs::path& dir) {
                            "\"]\nrobots = [8]\nseeds = 1\nmax_ticks = 300\n\n[optimizer]\nname = "
                            "\"random\"\npopulation = 2\n\n[budget]\ngenerations = 1\n\n[reevaluate]\n"
                            "top_k = 1\nseeds = 1\n";
-  put(dir / "tiny.toml", text);
+  cli_support::write_file(dir / "tiny.toml", text);
   return (dir / "tiny.toml").string();
 }
 
@@ -154,7 +137,7 @@ class FileSizeLimit {
 TEST(WriteErrors, AWriteThatRunsOutOfSpaceLeavesThePreviousFileIntact) {
   const fs::path dir = scratch("full");
   const fs::path out = dir / "params.json";
-  put(out, "the previous export\n");
+  cli_support::write_file(out, "the previous export\n");
   Result r;
   {
     const FileSizeLimit limit(512);  // the JSON export is several KB
@@ -162,7 +145,7 @@ TEST(WriteErrors, AWriteThatRunsOutOfSpaceLeavesThePreviousFileIntact) {
   }
   EXPECT_EQ(r.code, kExitFailure) << r.err;
   EXPECT_NE(r.err.find("cannot write " + out.string()), std::string::npos) << r.err;
-  EXPECT_EQ(slurp(out), "the previous export\n");
+  EXPECT_EQ(cli_support::read_file(out), "the previous export\n");
   // and no temporary file is left beside it
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
@@ -172,9 +155,9 @@ TEST(WriteErrors, AWriteThatRunsOutOfSpaceLeavesThePreviousFileIntact) {
 TEST(ProtectedInputs, NoOutputMayReplaceAnInput) {
   const fs::path dir = scratch("inputs");
   const fs::path params = dir / "p.toml";
-  put(params, "v_max = 10\n");
+  cli_support::write_file(params, "v_max = 10\n");
   const fs::path scenario = dir / "s.toml";
-  put(scenario, slurp(short_chain()));
+  cli_support::write_file(scenario, cli_support::read_file(short_chain()));
   const auto expect_refused = [&](const std::vector<std::string>& args, const std::string& out_option,
                                   const std::string& in_option) {
     const Result r = cli(args);
@@ -209,8 +192,8 @@ TEST(ProtectedInputs, NoOutputMayReplaceAnInput) {
   expect_refused({"export", "--params", params.string(), "--out",
                   (dir / "." / ".." / dir.filename() / "p.toml").string()},
                  "--out", "--params");
-  EXPECT_EQ(slurp(params), "v_max = 10\n");
-  EXPECT_EQ(slurp(scenario), slurp(short_chain()));
+  EXPECT_EQ(cli_support::read_file(params), "v_max = 10\n");
+  EXPECT_EQ(cli_support::read_file(scenario), cli_support::read_file(short_chain()));
 }
 
 TEST(ProtectedInputs, TwoOutputsOfOneCommandMayNotShareAFile) {
