@@ -20,6 +20,13 @@ std::string_view to_string(FailTarget t) {
   return "?";
 }
 
+std::optional<FailTarget> fail_target_from(std::string_view text) {
+  for (const FailTarget t : {FailTarget::kAny, FailTarget::kChain}) {
+    if (text == to_string(t)) return t;
+  }
+  return std::nullopt;
+}
+
 namespace {
 
 std::string fmt(double v) {
@@ -77,13 +84,9 @@ FaultModel parse_faults(const TableReader& t) {
     f.fail_until = static_cast<std::int64_t>(w.y);
   }
   const std::string target = t.string_or("fail_target", "any");
-  if (target == "any") {
-    f.fail_target = FailTarget::kAny;
-  } else if (target == "chain") {
-    f.fail_target = FailTarget::kChain;
-  } else {
-    t.fail("fail_target", "must be \"any\" or \"chain\", got \"" + target + "\"");
-  }
+  const std::optional<FailTarget> ft = fail_target_from(target);
+  if (!ft) t.fail("fail_target", "must be \"any\" or \"chain\", got \"" + target + "\"");
+  f.fail_target = *ft;
   f.camera_miss = t.number_or("camera_miss", f.camera_miss);
   f.camera_false = t.number_or("camera_false", f.camera_false);
   f.packet_loss = t.number_or("packet_loss", f.packet_loss);

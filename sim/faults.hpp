@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -26,6 +27,9 @@ enum class FailTarget : std::uint8_t {
 };
 
 std::string_view to_string(FailTarget t);
+
+/// "any" or "chain" (the `fail_target` key, --fail-target); nullopt for anything else.
+std::optional<FailTarget> fail_target_from(std::string_view text);
 
 /// The fault and noise model of a scenario (`[faults]` in its file, or command-line overrides).
 struct FaultModel {
