@@ -267,17 +267,8 @@ int run_ablate(const AblateOptions& o, const evolve::EvaluatorFactory& evaluator
       const std::vector<GridCase> grid = make_grid(scenarios.size(), o.robots, ms, o.seeds, o.seed_base);
       std::vector<sim::Params> params;
       for (const Config* c : list) params.push_back(c->params);
-      std::size_t last = 0;
-      const GridProgress progress = [&](std::size_t done, std::size_t total) {
-        if (tty) {
-          err << "\r  " << done << " / " << total << " runs, " << fixed(clock.seconds(), 0) << " s   "
-              << std::flush;
-        } else if (done == total || done >= last + std::max<std::size_t>(1, total / 10)) {
-          last = done;
-          err << "  " << done << " / " << total << " runs, " << fixed(clock.seconds(), 0) << " s\n";
-        }
-      };
-      const std::vector<std::vector<GridRun>> runs = run_grid(scenarios, grid, params, *evaluator, progress);
+      const std::vector<std::vector<GridRun>> runs =
+          run_grid(scenarios, grid, params, *evaluator, grid_progress(err, tty));
       if (tty) err << "\n";
       for (std::size_t k = 0; k < list.size(); ++k) {
         list[k]->outcomes.clear();
@@ -357,19 +348,11 @@ int run_ablate(const AblateOptions& o, const evolve::EvaluatorFactory& evaluator
   g.literal_params = o.literal;
   std::ostringstream md;
   write_ablation_markdown(md, g, rows);
-  int code = kExitOk;
-  const auto write = [&](const std::string& path, const std::function<void(std::ostream&)>& text) {
-    if (path.empty()) return;
-    try {
-      evolve::write_file_atomic(path, text);
-    } catch (const evolve::WriteError& e) {
-      err << "error: " << e.what() << "\n";
-      code = kExitFailure;
-    }
-  };
-  write(o.json, [&](std::ostream& f) { f << ablation_json(g, rows).dump(2) << "\n"; });
-  write(o.markdown, [&](std::ostream& f) { f << md.str(); });
-  write(o.svg, [&](std::ostream& f) { write_ablation_svg(f, g, rows); });
+  const int code =
+      write_outputs({{o.json, [&](std::ostream& f) { f << ablation_json(g, rows).dump(2) << "\n"; }},
+                     {o.markdown, [&](std::ostream& f) { f << md.str(); }},
+                     {o.svg, [&](std::ostream& f) { write_ablation_svg(f, g, rows); }}},
+                    err);
   out << md.str();
   return code;
 }

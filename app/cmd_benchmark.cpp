@@ -42,12 +42,8 @@ struct BenchmarkOptions {
 int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& evaluators, std::ostream& out,
                   std::ostream& err) {
   const BenchmarkConfig c = load_benchmark_config(o.config);
-  const bool both = o.mode == "both";
-  const std::vector<sim::Mode> modes =
-      both ? std::vector<sim::Mode>{sim::Mode::kPathFormation, sim::Mode::kTaskAllocation}
-           : std::vector<sim::Mode>{mode_from_option(o.mode)};
-  if (!both && modes[0] == sim::Mode::kDiffusion)
-    throw sim::ConfigError("--mode", 0, "", "must be pf, ta or both");
+  const std::vector<sim::Mode> modes = path_modes(o.mode);
+  const bool both = modes.size() == 2;
   const bool pf = both || modes[0] == sim::Mode::kPathFormation;
   const bool ta = both || modes[0] == sim::Mode::kTaskAllocation;
   const int threads = threads_or_all(o.threads);
@@ -100,16 +96,6 @@ int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& eva
 
   const std::vector<GridCase> grid = make_grid(scenarios.size(), c.robots, modes, c.seeds, c.seed_base);
   const bool tty = stderr_is_terminal();
-  std::size_t last = 0;
-  const GridProgress progress = [&](std::size_t done, std::size_t total) {
-    if (tty) {
-      err << "\r  " << done << " / " << total << " runs, " << fixed(clock.seconds(), 0) << " s   "
-          << std::flush;
-    } else if (done == total || done >= last + std::max<std::size_t>(1, total / 10)) {
-      last = done;
-      err << "  " << done << " / " << total << " runs, " << fixed(clock.seconds(), 0) << " s\n";
-    }
-  };
   err << "  " << arenas.size() << " arenas of " << groups.size() << " families"
       << (o.no_paper ? "" : " and " + std::to_string(scenarios.size() - arenas.size()) + " paper arenas")
       << " x " << c.robots.size() << " robot counts x " << modes.size() << " modes x " << c.seeds
@@ -118,7 +104,7 @@ int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& eva
   const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
   const std::vector<std::vector<GridRun>> runs =
       run_grid(scenarios, grid, two ? std::vector<sim::Params>{pa, pb} : std::vector<sim::Params>{pa},
-               *evaluator, progress);
+               *evaluator, grid_progress(err, tty));
   const std::vector<GridRun>& ra = runs[0];
   const std::vector<GridRun> rb = two ? runs[1] : std::vector<GridRun>{};
   if (tty) err << "\n";

@@ -106,20 +106,10 @@ int table_command(const TableOptions& o, const evolve::EvaluatorFactory& evaluat
   if (!o.record_failures.empty())
     record_failures(plan.scenarios, outcome.runs, r.params, o, plan.threads, err);
 
-  // every output that can be written is (a full disk loses one file, not the others)
-  int code = kExitOk;
-  const auto save = [&](const std::string& path, const std::function<void(std::ostream&)>& write) {
-    if (path.empty()) return;
-    try {
-      evolve::write_file_atomic(path, write);
-    } catch (const evolve::WriteError& e) {
-      err << "error: " << e.what() << "\n";
-      code = kExitFailure;
-    }
-  };
-  save(o.json, [&](std::ostream& f) { f << outcome.json.dump(2) << "\n"; });
-  save(o.csv, [&](std::ostream& f) { f << table_runs_csv(plan, outcome); });
-  save(o.markdown, [&](std::ostream& f) { f << outcome.markdown; });
+  const int code = write_outputs({{o.json, [&](std::ostream& f) { f << outcome.json.dump(2) << "\n"; }},
+                                  {o.csv, [&](std::ostream& f) { f << table_runs_csv(plan, outcome); }},
+                                  {o.markdown, [&](std::ostream& f) { f << outcome.markdown; }}},
+                                 err);
   out << outcome.markdown;
   return code;
 }

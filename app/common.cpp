@@ -7,6 +7,8 @@
 #include <sstream>
 #include <unistd.h>
 
+#include "cli.hpp"
+#include "evolve/atomic_write.hpp"
 #include "evolve/params_export.hpp"
 #include "fault_options.hpp"
 #include "sim/arenas/registry.hpp"
@@ -15,6 +17,20 @@
 #include "sim/hash.hpp"
 
 namespace swarmpath::app {
+
+int write_outputs(const std::vector<OutputFile>& files, std::ostream& err) {
+  int code = kExitOk;
+  for (const OutputFile& f : files) {
+    if (f.path.empty()) continue;
+    try {
+      evolve::write_file_atomic(f.path, f.write);
+    } catch (const evolve::WriteError& e) {
+      err << "error: " << e.what() << "\n";
+      code = kExitFailure;
+    }
+  }
+  return code;
+}
 
 sim::Params params_or_defaults(const std::string& path) {
   if (path.empty()) return sim::Params{};

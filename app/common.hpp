@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -18,6 +19,17 @@
 #include "sim/scenario.hpp"
 
 namespace swarmpath::app {
+
+/// An output file of a command: its path ("" when it was not asked for) and what writes it.
+struct OutputFile {
+  std::string path;
+  std::function<void(std::ostream&)> write;
+};
+
+/// Writes each asked-for file with evolve::write_file_atomic, every one even when another fails (a
+/// full disk loses one file, not the others), with an "error: cannot write FILE: ..." line on `err`
+/// for each that failed. kExitOk, or kExitFailure when one failed.
+int write_outputs(const std::vector<OutputFile>& files, std::ostream& err);
 
 /// The params file, or the paper's defaults (SPEC §7) when `path` is empty.
 sim::Params params_or_defaults(const std::string& path);
