@@ -1,4 +1,5 @@
 // SPDX-License-Identifier: MIT
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
@@ -56,6 +57,9 @@ int run(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // past the file-size limit (ulimit -f) a write fails with EFBIG, named like a full disk, instead of
+  // SIGXFSZ killing the process between a temporary file and its rename
+  std::signal(SIGXFSZ, SIG_IGN);
   const int code = run(argc, argv);
   // run_cli flushed and checked standard output; what C's stdio may still hold is checked here
   if ((std::fflush(stdout) != 0 || std::ferror(stdout) != 0) && code == swarmpath::app::kExitOk) {

@@ -326,8 +326,9 @@ def full_disk(binary, work):
         return
     before = {f: read(os.path.join(out, f)) for f in RUN_FILES}
 
+    # SIGXFSZ as a shell leaves it (subprocess restores its default): the binary itself must turn
+    # the limit into a failed write naming the file, not die of the signal
     def small_files():
-        signal.signal(signal.SIGXFSZ, signal.SIG_IGN)
         resource.setrlimit(resource.RLIMIT_FSIZE, (600, resource.RLIM_INFINITY))
 
     code, _, err = run(binary, evolve_args(config, out, ["--resume"]), preexec_fn=small_files)

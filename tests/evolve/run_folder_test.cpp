@@ -3,14 +3,19 @@
 // is never replaced by accident (--resume or --force), the checkpoint is written last so that a
 // kill or a failed write never leaves the log behind it, and no run file may replace an input.
 #include <filesystem>
+#include <mutex>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "app/cli.hpp"
+#include "evolve/atomic_write.hpp"
 #include "evolve/checkpoint.hpp"
+#include "evolve/evolve_config.hpp"
 #include "evolve/folder_lock.hpp"
+#include "evolve/objective.hpp"
+#include "evolve/runner.hpp"
 #include "evolve_test_support.hpp"
 #include "sim/config_error.hpp"
 #include "tests/app/cli_support.hpp"
@@ -138,6 +143,36 @@ TEST(RunFolder, AFailedWriteOnTheLastGenerationLeavesACheckpointThatReRunsIt) {
   // ... so that a resume re-runs it and the folder ends as an uninterrupted run's
   fs::remove(broken / "log.csv");
   r = cli(evolve_args(dir / "tiny.toml", broken, {"--resume"}));
+  ASSERT_EQ(r.code, 0) << r.err;
+  expect_same_run(broken, straight);
+}
+
+TEST(RunFolder, ALogThatCannotBeWrittenInTheLastGenerationLeavesThePreviousCheckpoint) {
+  // the failure strikes while the last generation runs, after the resume has rewritten the log:
+  // with checkpoint.json written before log.csv, the checkpoint would already say "finished"
+  const fs::path dir = scratch("last");
+  const fs::path straight = dir / "straight", broken = dir / "broken";
+  ASSERT_NO_FATAL_FAILURE(straight_and_stopped(dir, broken));
+  const EvolveConfig c = load_evolve_config((dir / "tiny.toml").string());
+  const SwarmObjective f(c);
+  RunOptions o = testing::test_options(broken, 2, 2, true);
+  std::once_flag block;
+  o.progress = [&](std::size_t, std::size_t) {
+    std::call_once(block, [&] {
+      fs::remove(broken / "log.csv");
+      fs::create_directories(broken / "log.csv" / "in-the-way");
+    });
+  };
+  try {
+    (void)run_evolution(c, f, o);
+    ADD_FAILURE() << "the run wrote past a log.csv it could not replace";
+  } catch (const WriteError& e) {
+    EXPECT_EQ(e.path(), (broken / "log.csv").string()) << e.what();
+  }
+  EXPECT_EQ(read_checkpoint((broken / "checkpoint.json").string()).generation, 1);
+  // the resume re-runs the last generation and ends as the uninterrupted run
+  fs::remove_all(broken / "log.csv");
+  const app::cli_support::CliResult r = cli(evolve_args(dir / "tiny.toml", broken, {"--resume"}));
   ASSERT_EQ(r.code, 0) << r.err;
   expect_same_run(broken, straight);
 }
