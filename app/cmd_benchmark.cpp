@@ -16,7 +16,6 @@
 #include "cli_options.hpp"
 #include "commands.hpp"
 #include "common.hpp"
-#include "evolve/atomic_write.hpp"
 #include "evolve/path_collision.hpp"
 #include "experiment.hpp"
 #include "sim/astar.hpp"
@@ -184,14 +183,7 @@ int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& eva
   }
   std::vector<std::string> labels;
   for (const BenchmarkRow& r : rows_a) labels.push_back(r.group);
-  if (!o.svg.empty()) {
-    evolve::write_file_atomic(o.svg, [&](std::ostream& s) {
-      write_success_svg(s, c.name + " benchmark v" + std::to_string(c.version),
-                        "success rate per family; A = " + name_a + (two ? ", B = " + o.against : ""), labels,
-                        bars);
-    });
-  }
-  if (!o.json.empty()) {
+  const auto write_json = [&](std::ostream& f) {
     // every run, with the table machinery's fields
     j["table"] =
         both ? comparison_json(scenarios, astar8, ra,
@@ -200,11 +192,20 @@ int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& eva
                                        summarise(scenarios, astar8, runs_of(ra, sim::Mode::kTaskAllocation),
                                                  sim::Mode::kTaskAllocation)))
              : table_json(scenarios, astar8, ra, summarise(scenarios, astar8, ra, modes[0]));
-    evolve::write_file_atomic(o.json, j.dump(2) + "\n");
-  }
-  if (!o.markdown.empty()) evolve::write_file_atomic(o.markdown, md.str());
+    f << j.dump(2) << "\n";
+  };
+  const int code = write_outputs(
+      {{o.svg,
+        [&](std::ostream& f) {
+          write_success_svg(f, c.name + " benchmark v" + std::to_string(c.version),
+                            "success rate per family; A = " + name_a + (two ? ", B = " + o.against : ""),
+                            labels, bars);
+        }},
+       {o.json, write_json},
+       {o.markdown, [&](std::ostream& f) { f << md.str(); }}},
+      err);
   out << md.str();
-  return kExitOk;
+  return code;
 }
 
 }  // namespace

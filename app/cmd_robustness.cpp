@@ -14,7 +14,6 @@
 #include "cli_options.hpp"
 #include "commands.hpp"
 #include "common.hpp"
-#include "evolve/atomic_write.hpp"
 #include "evolve/path_collision.hpp"
 #include "experiment.hpp"
 #include "fault_options.hpp"
@@ -119,26 +118,29 @@ int run_robustness(const RobustnessOptions& o, const evolve::EvaluatorFactory& e
      << ", their failure times uniform over ticks " << f.fail_from << "-" << f.fail_until
      << "; other faults: " << faults_text(other) << "\n\n";
   write_robustness_markdown(md, report);
-  if (!o.markdown.empty()) evolve::write_file_atomic(o.markdown, md.str());
-  if (!o.json.empty()) {
-    nlohmann::ordered_json j = robustness_json(report, cases, runs, variants, astar8);
-    j["params"] = o.params.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.params);
-    j["robots"] = o.robots;
-    j["seeds"] = o.seeds;
-    j["seed_base"] = o.seed_base;
-    j["faults"] = faults_json(base[0].faults);
-    evolve::write_file_atomic(o.json, j.dump(2) + "\n");
-  }
-  if (!o.svg.empty()) {
-    std::ostringstream svg;
-    write_robustness_svg(svg, report,
-                         std::to_string(base.size()) + " scenarios, " + std::to_string(o.robots.size()) +
-                             " robot counts, " + std::to_string(o.seeds) + " seeds; " +
-                             (o.params.empty() ? std::string("default params") : o.params));
-    evolve::write_file_atomic(o.svg, svg.str());
-  }
+  const int code =
+      write_outputs({{o.markdown, [&](std::ostream& file) { file << md.str(); }},
+                     {o.json,
+                      [&](std::ostream& file) {
+                        nlohmann::ordered_json j = robustness_json(report, cases, runs, variants, astar8);
+                        j["params"] = o.params.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.params);
+                        j["robots"] = o.robots;
+                        j["seeds"] = o.seeds;
+                        j["seed_base"] = o.seed_base;
+                        j["faults"] = faults_json(base[0].faults);
+                        file << j.dump(2) << "\n";
+                      }},
+                     {o.svg,
+                      [&](std::ostream& file) {
+                        write_robustness_svg(
+                            file, report,
+                            std::to_string(base.size()) + " scenarios, " + std::to_string(o.robots.size()) +
+                                " robot counts, " + std::to_string(o.seeds) + " seeds; " +
+                                (o.params.empty() ? std::string("default params") : o.params));
+                      }}},
+                    err);
   out << md.str();
-  return kExitOk;
+  return code;
 }
 
 }  // namespace

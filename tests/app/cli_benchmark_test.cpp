@@ -182,5 +182,20 @@ TEST(Benchmark, TheCommandReportsPerFamilyAndOverallTheSameAtAnyThreadCount) {
   EXPECT_EQ(cli({"benchmark", "--config", (dir / "tiny.toml").string(), "--families", "rooms"}).code, 2);
 }
 
+TEST(Benchmark, EveryOutputThatCanBeWrittenIsWrittenAndTheOneThatCannotIsNamed) {
+  const fs::path dir = temp_dir() / "full";
+  fs::create_directories(dir);
+  std::ofstream(dir / "tiny.toml") << kTiny;
+  const auto r = cli({"benchmark", "--config", (dir / "tiny.toml").string(), "--families", "wall-gap",
+                      "--no-paper", "--mode", "pf", "--threads", "1", "--svg", (dir / "b.svg").string(),
+                      "--json", "/dev/full", "--md", (dir / "b.md").string()});
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("cannot write /dev/full"), std::string::npos) << r.err;
+  EXPECT_EQ(read(dir / "b.svg").rfind("<svg", 0), 0u);
+  ASSERT_TRUE(fs::exists(dir / "b.md"));  // written after the failed JSON
+  EXPECT_EQ(read(dir / "b.md"), r.out);
+  EXPECT_NE(r.out.find("wall-gap"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace swarmpath::app

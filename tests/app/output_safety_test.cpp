@@ -76,6 +76,12 @@ TEST(WriteErrors, EveryCommandFailsWhenItsStandardOutputCannotBeWritten) {
       {"export", "--format", "json"},
       {"arena", "families"},
       {"arena", "generate", "--family", "wall-gap", "--seed", "7"},
+      {"ablate", "--list"},
+      {"benchmark", "--help"},
+      {"robustness", "--help"},
+      {"verify", "--help"},
+      {"report", "--help"},
+      {"view", "--help"},
       {"evolve", "--config", tiny_evolve_config(dir), "--out", (dir / "run").string(), "--threads", "2"},
   };
   for (const auto& args : commands) {

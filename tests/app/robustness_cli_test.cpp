@@ -130,6 +130,37 @@ TEST(FaultCli, RobustnessSweepsFailuresAndPacketLoss) {
   EXPECT_NE(svg.find("robots failing (%)"), std::string::npos);
 }
 
+TEST(FaultCli, RobustnessWritesEveryOutputItCanAndNamesTheOneItCannot) {
+  const auto dir = temp_dir() / "full";
+  std::filesystem::create_directories(dir);
+  const auto r = cli({"robustness",
+                      "--scenarios",
+                      source("tests/data/short_chain.toml"),
+                      "--robots",
+                      "4",
+                      "--seeds",
+                      "1",
+                      "--fail-fractions",
+                      "0",
+                      "--packet-loss",
+                      "0",
+                      "--ticks",
+                      "5",
+                      "--threads",
+                      "1",
+                      "--md",
+                      (dir / "r.md").string(),
+                      "--json",
+                      "/dev/full",
+                      "--svg",
+                      (dir / "r.svg").string()});
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("cannot write /dev/full"), std::string::npos) << r.err;
+  // the outputs before and after the one that failed are all there
+  EXPECT_EQ(read(dir / "r.md"), r.out);
+  EXPECT_EQ(read(dir / "r.svg").rfind("<svg", 0), 0u);
+}
+
 TEST(FaultCli, RobustnessRunsABenchmarksArenasBesideTheScenariosAndReportsEachGroup) {
   const auto dir = temp_dir();
   const auto config = dir / "tiny_benchmark.toml";
