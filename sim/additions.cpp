@@ -31,6 +31,7 @@ const std::array kAdditions{
   Addition{"retarget_nearer", "a forming robot re-targets to a RED nearer the nest", "§2.3 #5r", kBoth, {{{"retarget_nearer", 0}}}, {}},
   Addition{"subgoal_nestward", "subgoals form only nearer the nest than their target", "§2.3 #5, #6b", kBoth, {{{"subgoal_nestward", 0}}}, {}},
   Addition{"stop_at_view_edge", "a target lost far off: back to where it was seen, stop", "§2.3 #7a", kBoth, {{{"stop_at_view_edge", 0}}}, {}},
+  Addition{"form_retries", "a robot that lost its target goes home and tries again", "§2.3 #7, #8b", kBoth, {{{"form_retries", 0}}}, {}},
   Addition{"backoff_far_spot", "the goal found from its far side: back off to the spot", "§2.3 #5", kBoth, {{{"backoff_far_spot", 0}}}, {}},
   Addition{"spot_patience", "patience on the way to the spot without a wall in the way", "§2.3 #5", kBoth, {{{"spot_patience", 0}}}, {"backoff_far_spot", "T_trap"}},
   Addition{"spot_crumb_tol", "the spot is a crumb of the robot's own way out", "§2.3 #5", kBoth, {{{"spot_crumb_tol", 0}}}, {"backoff_far_spot"}},

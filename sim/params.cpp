@@ -153,7 +153,7 @@ const std::array kTable{
   ParamInfo{ 0, "link_outward", B, &P::link_outward, 0, 0, 1, 1, "", "",
             "subgoal_nestward: a forming robot retracing its own way from the nest may stop as a subgoal wherever its target is the nearest chain light in view (the new link extends the chain instead of folding back beside it), however far from the nest (off: at most trail_slack farther from the nest than its target)",
             "§2.3 #5, #6b", {}},
-  ParamInfo{ 0, "form_retries", R, &P::form_retries, 0, 0, 20, 1, "", "",
+  ParamInfo{ 0, "form_retries", R, &P::form_retries, 3, 0, 20, 1, "", "",
             "a forming robot that loses its target (row #7: out of view a visible range away; row #8b: timed out with it out of view) goes home along its own way from the nest (RETURN_TO_NEST), rests and explores again, its next trip starting at its sighting of the chain (site_fidelity), instead of turning RECOVERY, which is final: at most this many times in a run, then RECOVERY (row #7h; 0: RECOVERY at once, as SPEC)",
             "§2.3 #7, #8b", {}},
   ParamInfo{ 0, "align_keep_view", B, &P::align_keep_view, 1, 0, 1, 1, "", "",

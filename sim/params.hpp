@@ -105,7 +105,7 @@ struct Params {
   bool trail_nestward = true;     ///< from the spot back to its trail: nearer the nest than the target
   bool tip_by_links = false;      ///< row #5r: re-target to the target's child (by links), not by distance
   bool link_outward = false;  ///< rows #5, #6b on its trail: stop if the target is the nearest chain light
-  double form_retries = 0;    ///< rows #7, #8b: a robot losing its target goes home, this often
+  double form_retries = 3;    ///< rows #7, #8b: a robot losing its target goes home, this often
   // aligning (SPEC §2.4, rows #10-#13) and the chain's links
   bool align_keep_view = true;  ///< rows #10, #13: an aligning robot keeps both references in view
   bool align_taper = true;      ///< §2.4: speed tapers onto P; avoidance only when something is sensed

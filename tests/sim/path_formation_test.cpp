@@ -365,11 +365,18 @@ TEST(PfTable, Row7aStopsWhereTheTargetWasLastInView) {
   EXPECT_EQ(m.state, PfState::kSubgoal);
 }
 
+// SPEC's rows #7 and #8b: RECOVERY at once (form_retries = 0; with retries left, row #7h below)
+Params no_retries() {
+  Params p;
+  p.form_retries = 0;
+  return p;
+}
+
 TEST(PfTable, Row7TargetLostInTheVisibleRange) {  // label f
   PfMemory m = forming({1.05, 0.0});
   m.target.unseen = 2;             // lost after this tick's miss (T_lost = 3)
   m.last_saw_target = {0.9, 0.0};  // lost while still close to it: no view-edge stop
-  EXPECT_EQ(fire(m, Reading{}), "#7");
+  EXPECT_EQ(fire(m, Reading{}, no_retries()), "#7");
   EXPECT_EQ(m.state, PfState::kRecovery);
 }
 
@@ -383,11 +390,11 @@ TEST(PfTable, Row8StallGuard) {
   PfMemory unseen = forming({0.40, 0.0});
   unseen.t_state = 600;
   unseen.last_saw_target = {0.3, 0.0};
-  EXPECT_EQ(fire(unseen, Reading{}), "#8b");
+  EXPECT_EQ(fire(unseen, Reading{}, no_retries()), "#8b");
   EXPECT_EQ(unseen.state, PfState::kRecovery);
 }
 
-// R: form_retries (off by default; docs/detours.md). A forming robot that loses its target (row #7,
+// R: form_retries (3 by default; docs/detours.md). A forming robot that loses its target (row #7,
 // or row #8b's time-out with the target out of view) goes home instead of standing ORANGE for the
 // rest of the run, at most form_retries times; a time-out with the target in view still stops (#8a).
 TEST(PfTable, Row7hLostTargetGoesHomeWhileRetriesLast) {
@@ -408,7 +415,9 @@ TEST(PfTable, Row7hLostTargetGoesHomeWhileRetriesLast) {
   EXPECT_EQ(fire(m, Reading{}, p), "#7");
   EXPECT_EQ(m.state, PfState::kRecovery);
   m = lost_it();
-  EXPECT_EQ(fire(m, Reading{}), "#7");  // off (0): RECOVERY at once
+  EXPECT_EQ(fire(m, Reading{}, no_retries()), "#7");  // off (0): RECOVERY at once
+  m = lost_it();
+  EXPECT_EQ(fire(m, Reading{}), "#7h");  // the default: form_retries = 3
   PfMemory timed_out = forming({0.40, 0.0});
   timed_out.t_state = 600;
   timed_out.last_saw_target = {0.3, 0.0};
