@@ -353,7 +353,7 @@ def main():
     parser.add_argument("--quick", action="store_true", help="a bounded run (about a minute)")
     parser.add_argument("--seed", type=int, default=1)
     parser.add_argument("--fuzz", type=int, help="mutated files (quick: 120, default: 1500)")
-    parser.add_argument("--kills", type=int, help="killed-and-resumed runs (quick: 3, default: 25)")
+    parser.add_argument("--kills", type=int, help="killed-and-resumed runs (quick: 20, default: 25)")
     parser.add_argument("--keep", action="store_true", help="keep the work folder")
     a = parser.parse_args()
     binary = os.path.abspath(a.binary)
@@ -362,7 +362,7 @@ def main():
     started = time.time()
     try:
         fuzz(binary, work, rng, a.fuzz if a.fuzz is not None else (120 if a.quick else 1500))
-        kill_loop(binary, work, rng, a.kills if a.kills is not None else (3 if a.quick else 25))
+        kill_loop(binary, work, rng, a.kills if a.kills is not None else (20 if a.quick else 25))
         lock_check(binary, work)
         full_disk(binary, work)
     finally:
