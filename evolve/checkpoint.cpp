@@ -128,6 +128,11 @@ RunState checkpoint_from_json(const nlohmann::json& j) {
       h.fail("generation", "must be " + std::to_string(i) + " (the rows count generations)");
     g.best = h.number("best", -kInf, kInf);
     g.mean = h.number("mean", -kInf, kInf);
+    // the mean of a generation's fitness values is never below their best (up to its last bits)
+    if (g.mean < g.best - 1e-9 * std::max(1.0, std::fabs(g.best))) {
+      h.fail("mean", "must be at least the generation's best (" + number_text(g.best) + "), got " +
+                         number_text(g.mean));
+    }
     g.std = h.number("std", 0.0, kInf);
     g.best_so_far = h.number("best_so_far", -kInf, kInf);
     const double lowest = i == 0 ? g.best : std::min(s.history.back().best_so_far, g.best);

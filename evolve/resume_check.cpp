@@ -38,12 +38,29 @@ void check(const EvolveConfig& c, const RunState& st, std::size_t nc, std::size_
                      " validation runs, got " + std::to_string(all));
   }
   const std::size_t objectives = c.multi.objectives.size();
+  const std::size_t tuned = tuned_numbers(c.genome, c.genome.base).size();
   for (std::size_t i = 0; i < st.history.size(); ++i) {
-    const std::size_t n = st.history[i].front_min.size();
+    const GenerationRecord& g = st.history[i];
+    const std::string at = "history[" + std::to_string(i) + "].";
+    const std::size_t n = g.front_min.size();
     if (n != 0 && n != objectives) {
-      fail("history[" + std::to_string(i) + "].front_min", "expected " + std::to_string(objectives) +
-                                                               " numbers (one per objective) or none, got " +
-                                                               std::to_string(n));
+      fail(at + "front_min", "expected " + std::to_string(objectives) +
+                                 " numbers (one per objective) or none, got " + std::to_string(n));
+    }
+    // the tuned parameters' values in log.csv: one column each (none in older checkpoints)
+    for (const auto& [key, v] : {std::pair{"tuned_best", &g.tuned_best},
+                                 {"tuned_mean", &g.tuned_mean},
+                                 {"tuned_min", &g.tuned_min},
+                                 {"tuned_max", &g.tuned_max}}) {
+      if (!v->empty() && v->size() != tuned) {
+        fail(at + key, "expected " + std::to_string(tuned) + " numbers (the tuned parameters) or none, got " +
+                           std::to_string(v->size()));
+      }
+    }
+    if (!c.multi_objective()) {  // a front belongs to a Pareto run
+      if (g.front_size != 0) fail(at + "front_size", "must be 0 in a single-objective run");
+      if (g.feasible != 0) fail(at + "feasible", "must be 0 in a single-objective run");
+      if (g.hypervolume != 0.0) fail(at + "hypervolume", "must be 0 in a single-objective run");
     }
   }
   if (c.multi_objective()) {

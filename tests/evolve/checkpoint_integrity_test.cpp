@@ -82,6 +82,16 @@ TEST(CheckpointIntegrity, EveryRunFieldIsCheckedOnResume) {
            [](nlohmann::json& j) {
              j["history"][1]["best_so_far"] = j["history"][1]["best"].get<double>() + 1.0;
            }},
+          {"history[0].mean", "at least the generation's best",
+           [](nlohmann::json& j) { j["history"][0]["mean"] = j["history"][0]["best"].get<double>() - 1.0; }},
+          {"history[0].tuned_best", "expected 3 numbers",
+           [](nlohmann::json& j) { j["history"][0]["tuned_best"].push_back(0.5); }},
+          {"history[1].tuned_max", "expected 3 numbers",
+           [](nlohmann::json& j) { j["history"][1]["tuned_max"].erase(0); }},
+          {"history[0].front_size", "must be 0",
+           [](nlohmann::json& j) { j["history"][0]["front_size"] = 50; }},
+          {"history[1].hypervolume", "must be 0",
+           [](nlohmann::json& j) { j["history"][1]["hypervolume"] = 2.5; }},
           {"history[0].best_success_rate", "must lie in [0, 1]",
            [](nlohmann::json& j) { j["history"][0]["best_success_rate"] = 2.0; }},
           {"history[1].evaluations", "grow",
