@@ -402,6 +402,12 @@ void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string
   r.seeds = int_in(*t, "seeds", r.seeds, 1, 100000);
   r.arenas = int_in(*t, "arenas", r.arenas, 1, 10000);
   r.every_generation = t->boolean_or("every_generation", r.every_generation);
+  r.race = t->boolean_or("race", r.race);
+  if (r.race && c.multi_objective()) {
+    t->fail("race", "racing applies to the finalists of a single-objective run: remove race");
+  }
+  r.race_level = number_in(*t, "race_level", r.race_level, 1e-6, 0.5);
+  r.race_first_test = int_in(*t, "race_first_test", r.race_first_test, 2, 100000);
   if (t->has("held_out")) {
     r.held_out = scenario_list(*t, "held_out", base_dir);
   } else {
@@ -582,6 +588,11 @@ nlohmann::ordered_json config_json(const EvolveConfig& c) {
   if (!e.families.empty() || c.reevaluate.every_generation) {
     j["reevaluate"]["arenas"] = c.reevaluate.arenas;
     j["reevaluate"]["every_generation"] = c.reevaluate.every_generation;
+  }
+  if (c.reevaluate.race) {  // only when on: configs without it keep their hash
+    j["reevaluate"]["race"] = true;
+    j["reevaluate"]["race_level"] = c.reevaluate.race_level;
+    j["reevaluate"]["race_first_test"] = c.reevaluate.race_first_test;
   }
   if (c.multi_objective()) {
     nlohmann::ordered_json use = nlohmann::ordered_json::array();

@@ -65,6 +65,9 @@ struct Reevaluation {
   std::vector<ScenarioRef> held_out;  ///< extra scenarios, reported, not used to choose
   int arenas = 4;                     ///< validation arenas per family entry (seeds training never uses)
   bool every_generation = false;      ///< evaluate each generation's best on the validation set (log.csv)
+  bool race = false;                  ///< race the finalists block by block (evolve/racing.hpp)
+  double race_level = 0.05;           ///< racing: drop a finalist when its paired t-test p < this
+  int race_first_test = 2;            ///< racing: blocks run before the first test
 };
 
 struct EvolveConfig {

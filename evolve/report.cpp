@@ -29,6 +29,11 @@ nlohmann::ordered_json finalist_json(const EvolveConfig& c, const Finalist& f, s
   j["reevaluated"] = stats_json(f.reevaluated);
   j["held_out"] = f.held_out.runs > 0 ? stats_json(f.held_out) : nlohmann::ordered_json(nullptr);
   if (f.arenas.runs > 0) j["validation_arenas"] = stats_json(f.arenas);
+  if (c.reevaluate.race) {
+    j["dropped_after_blocks"] = f.dropped_after;
+    j["dropped_p_value"] =
+        f.dropped_after > 0 ? nlohmann::ordered_json(f.p_value) : nlohmann::ordered_json(nullptr);
+  }
   nlohmann::ordered_json tuned;
   for (const Gene& g : c.genome.genes) tuned[std::string(g.info->name)] = param_value_json(f.params, *g.info);
   j["tuned"] = tuned;
@@ -238,6 +243,11 @@ nlohmann::ordered_json run_json(const EvolveConfig& c, const RunResult& r, int t
   j["base_held_out"] =
       r.base.held_out.runs > 0 ? stats_json(r.base.held_out) : nlohmann::ordered_json(nullptr);
   if (r.base.arenas.runs > 0) j["base_validation_arenas"] = stats_json(r.base.arenas);
+  if (c.reevaluate.race) {
+    j["racing"] = {{"blocks", r.race.blocks},
+                   {"simulations", r.race.simulations},
+                   {"simulations_without_racing", r.race.without_racing}};
+  }
   j["best"] =
       r.finalists.empty() ? nlohmann::ordered_json(nullptr) : finalist_json(c, r.finalists[r.best], r.best);
   if (!r.finalists.empty()) {

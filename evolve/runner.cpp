@@ -367,21 +367,36 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   finalists.push_back(Decoded{c.genome.base, false, {}});
   note("re-evaluating " + std::to_string(st.elites.size()) + " finalists and the base params on " +
        std::to_string(result.reevaluation_cases.size()) + " fresh cases each");
-  const std::vector<RunScore> scores =
-      evaluate_batch(f, finalists, result.reevaluation_cases, evaluator, o.progress);
+  const RaceOutcome race = reevaluate_finalists(f, finalists, st.elites.size(), result.reevaluation_cases,
+                                                c.reevaluate, evaluator, o.progress);
+  result.race = race.summary;
+  std::optional<std::size_t> best;
   for (std::size_t i = 0; i < finalists.size(); ++i) {
-    const auto [train, held] = split_held_out(scores, i, result.settings, result.reevaluation_cases);
+    const FinalistRuns& runs = race.finalists[i];
+    const auto [train, held] = split_held_out(runs.scores, 0, result.settings, runs.cases);
     const bool base = i + 1 == finalists.size();
-    Finalist fin{base ? Elite{} : st.elites[i], finalists[i].params, summarise(train), summarise(held),
-                 summarise(arena_runs(scores, i, result.settings, result.reevaluation_cases))};
+    Finalist fin{base ? Elite{} : st.elites[i],
+                 finalists[i].params,
+                 summarise(train),
+                 summarise(held),
+                 summarise(arena_runs(runs.scores, 0, result.settings, runs.cases)),
+                 runs.dropped_after,
+                 runs.p_value};
     if (base) {
       result.base = std::move(fin);
       break;
     }
     result.finalists.push_back(std::move(fin));
-    if (result.finalists[i].reevaluated.fitness < result.finalists[result.best].reevaluated.fitness) {
-      result.best = i;
+    // the best of those that ran every case (a finalist dropped by racing is never chosen)
+    if (runs.dropped_after == 0 &&
+        (!best || result.finalists[i].reevaluated.fitness < result.finalists[*best].reevaluated.fitness)) {
+      best = i;
     }
+  }
+  result.best = best.value_or(0);
+  if (c.reevaluate.race) {
+    note("racing: " + std::to_string(result.race.simulations) + " of " +
+         std::to_string(result.race.without_racing) + " re-evaluation simulations run");
   }
   result.seconds = clock.recorded();
   result.state = st;

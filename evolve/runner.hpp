@@ -21,6 +21,7 @@
 #include "evolve/genome.hpp"
 #include "evolve/objective.hpp"
 #include "evolve/optim/optimizer.hpp"
+#include "evolve/racing.hpp"
 
 namespace swarmpath::evolve {
 
@@ -53,6 +54,8 @@ struct Finalist {
   CandidateStats reevaluated;  ///< on fresh seeds of the training settings: what picks the best
   CandidateStats held_out;     ///< on the held-out settings (runs == 0 when there are none)
   CandidateStats arenas;       ///< on the validation arenas alone (runs == 0 without families)
+  int dropped_after = 0;       ///< racing: blocks run before it was dropped (0: every case; see racing.hpp)
+  double p_value = 1.0;        ///< racing: the paired test's p-value when dropped
 };
 
 struct RunResult {
@@ -65,6 +68,7 @@ struct RunResult {
   std::vector<EvalSetting> settings;         ///< the objective's settings
   std::vector<EvalCase> cases;               ///< the cases of generation 0 (later ones differ in seed only)
   std::vector<EvalCase> reevaluation_cases;  ///< the finalists' cases
+  RaceSummary race;                          ///< the re-evaluation's simulations (racing or not)
 };
 
 /// The budget in force: the config's, or `generations` generations when given.
