@@ -87,6 +87,13 @@ nlohmann::ordered_json checkpoint_json(const RunState& s) {
       history.back()["validation_fitness"] = r.validation_fitness;
       history.back()["validation_success_rate"] = r.validation_success_rate;
     }
+    if (r.capped_runs > 0 || r.reruns > 0) {  // capping only: other checkpoints stay as they were
+      history.back()["capping"] = {{"candidates", r.capped_candidates},
+                                   {"capped_runs", r.capped_runs},
+                                   {"reruns", r.reruns},
+                                   {"ticks_capped", r.ticks_capped},
+                                   {"ticks_rerun", r.ticks_rerun}};
+    }
   }
   j["history"] = history;
   nlohmann::ordered_json elites = nlohmann::ordered_json::array();
@@ -162,6 +169,14 @@ RunState checkpoint_from_json(const nlohmann::json& j) {
       g.validation_fitness = h.number_or_null("validation_fitness", 0.0, kInf);
       if (std::isnan(g.validation_fitness)) g.validation_fitness = kInf;
       g.validation_success_rate = h.number("validation_success_rate", 0.0, 1.0);
+    }
+    if (h.has("capping")) {
+      const StateReader k = h.object("capping");
+      g.capped_candidates = static_cast<int>(k.integer("candidates", 0, kInt));
+      g.capped_runs = k.integer("capped_runs", 0, kBig);
+      g.reruns = k.integer("reruns", 0, kBig);
+      g.ticks_capped = k.integer("ticks_capped", 0, kBig);
+      g.ticks_rerun = k.integer("ticks_rerun", 0, kBig);
     }
     s.history.push_back(g);
   }

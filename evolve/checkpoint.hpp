@@ -41,6 +41,12 @@ struct GenerationRecord {
   int validation_runs = 0;               ///< 0: not evaluated
   double validation_fitness = 0.0;       ///< its mean fitness there
   double validation_success_rate = 0.0;  ///< its success rate there
+  // [evaluation] capping: what it did this generation (evolve/capping.hpp's CappingTally)
+  int capped_candidates = 0;      ///< candidates with a censored fitness
+  std::int64_t capped_runs = 0;   ///< runs stopped at T_c for good
+  std::int64_t reruns = 0;        ///< open runs run again in full
+  std::int64_t ticks_capped = 0;  ///< sum of T_max - T_c over capped runs (the most they saved)
+  std::int64_t ticks_rerun = 0;   ///< sum of T_c over reruns (their first try's cost)
 };
 
 /// A distinct candidate among the best so far, by its generation mean.

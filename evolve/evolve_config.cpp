@@ -245,6 +245,8 @@ void read_evaluation(EvolveConfig& c, const TableReader& root, const std::string
     t.allow("max_ticks");
   }
   e.fixed_seeds = t.boolean_or("fixed_seeds", false);
+  e.capping = t.boolean_or("capping", false);
+  e.capping_fraction = number_in(t, "capping_fraction", e.capping_fraction, 0.01, 0.99);
   for (const TableReader& f : t.table_array("family")) e.families.push_back(read_family(f, e));
   t.finish();
   if (e.scenarios.empty() && e.families.empty()) {
@@ -361,6 +363,12 @@ void read_optimizer(EvolveConfig& c, const TableReader& root) {
   }
   const bool is_multi = std::find(multi.begin(), multi.end(), o.name) != multi.end();
   read_objectives(c, root, is_multi);
+  // capping keeps the ranks CMA-ES selects by and random search's best, not every comparison
+  if (c.evaluation.capping && o.name != "cmaes" && o.name != "random") {
+    root.required_table("evaluation")
+        .fail("capping", "adaptive capping needs optimizer cmaes or random (got \"" + o.name +
+                             "\", whose steps may compare censored fitness values): remove capping");
+  }
   // the optimiser checks its own settings: build it once on this genome
   try {
     const Vector x0 = encode(c.genome, c.genome.base);
@@ -545,6 +553,10 @@ nlohmann::ordered_json config_json(const EvolveConfig& c) {
       {"seeds", e.seeds},
       {"max_ticks", e.max_ticks ? nlohmann::ordered_json(*e.max_ticks) : nlohmann::ordered_json(nullptr)},
       {"fixed_seeds", e.fixed_seeds}};
+  if (e.capping) {  // only when on: configs without it keep their hash
+    j["evaluation"]["capping"] = true;
+    j["evaluation"]["capping_fraction"] = e.capping_fraction;
+  }
   if (!e.families.empty()) {
     // only runs with families carry these keys, so the hash of every other config stays as it was
     nlohmann::ordered_json families = nlohmann::ordered_json::array();

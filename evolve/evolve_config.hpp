@@ -49,6 +49,8 @@ struct EvaluationSet {
   std::optional<std::int64_t> max_ticks;  ///< overrides every scenario's T_max
   bool fixed_seeds = false;               ///< true: every generation reuses generation 0's seeds (and arenas)
   std::vector<FamilyEntry> families;      ///< arena families (beside or instead of the scenarios)
+  bool capping = false;                   ///< adaptive capping of the runs (evolve/capping.hpp)
+  double capping_fraction = 0.5;          ///< capping: first try of every run to this fraction of T_max
 };
 
 /// When the run stops (the first limit reached; 0 = no limit; at least one is set).

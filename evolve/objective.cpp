@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 #include "objective.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <set>
 #include <stdexcept>
@@ -180,6 +182,19 @@ CaseSimulation SwarmObjective::simulation(const EvalCase& c) const {
 
 RunScore SwarmObjective::score(const sim::Params&, const EvalCase& c, const sim::Metrics& m) const {
   return score_run(m, info(c), weights_);
+}
+
+std::optional<double> SwarmObjective::score_floor(const EvalCase& c, std::int64_t ticks) const {
+  // a later success: its time is past `ticks`; its path runs nest -> subgoals -> goal, so it is at
+  // least the straight nest-goal distance (a success with no path / A* counts fail_path_ratio); it
+  // uses >= 0 robots. A failure scores the penalty, higher still.
+  const CaseInfo k = info(c);
+  const sim::Scenario& s = *simulation(c).scenario;
+  double ratio = 0.0;
+  if (std::isfinite(k.astar_tu) && k.astar_tu > 0.0)
+    ratio = std::min(sim::to_tu(sim::dist(s.nest, s.goal)) / k.astar_tu, weights_.fail_path_ratio);
+  return weights_.w_time * static_cast<double>(ticks) / static_cast<double>(k.max_ticks) +
+         weights_.w_path * ratio;
 }
 
 RunScore SwarmObjective::penalty(const EvalCase& c) const { return penalty_score(info(c), weights_); }

@@ -77,6 +77,14 @@ class CaseObjective {
   /// Logically const and thread-safe like the others; no result depends on whether it was called.
   virtual void prepare(const std::vector<EvalCase>& cases) const { (void)cases; }
 
+  /// Adaptive capping (evolve/capping.hpp): the lowest score case c's run can still get once it
+  /// has run `ticks` ticks without forming its path; nullopt (the default): no bound, never capped.
+  virtual std::optional<double> score_floor(const EvalCase& c, std::int64_t ticks) const {
+    (void)c;
+    (void)ticks;
+    return std::nullopt;
+  }
+
   /// simulation(c), run here, then score(): one case in this thread.
   RunScore evaluate(const sim::Params& p, const EvalCase& c) const;
 };
@@ -107,6 +115,8 @@ class SwarmObjective final : public CaseObjective {
   CaseSimulation simulation(const EvalCase& c) const override;
   RunScore score(const sim::Params& p, const EvalCase& c, const sim::Metrics& m) const override;
   RunScore penalty(const EvalCase& c) const override;
+  /// w_time ticks / T_max + w_path |nest - goal| / A*: what a later success still pays.
+  std::optional<double> score_floor(const EvalCase& c, std::int64_t ticks) const override;
   void prepare(const std::vector<EvalCase>& cases) const override;
 
   /// The scenario of a scenario-file setting.

@@ -243,6 +243,22 @@ nlohmann::ordered_json run_json(const EvolveConfig& c, const RunResult& r, int t
   j["base_held_out"] =
       r.base.held_out.runs > 0 ? stats_json(r.base.held_out) : nlohmann::ordered_json(nullptr);
   if (r.base.arenas.runs > 0) j["base_validation_arenas"] = stats_json(r.base.arenas);
+  if (c.evaluation.capping) {
+    nlohmann::ordered_json k = {{"fraction", c.evaluation.capping_fraction},
+                                {"candidates", 0},
+                                {"capped_runs", 0},
+                                {"reruns", 0},
+                                {"ticks_capped", 0},
+                                {"ticks_rerun", 0}};
+    for (const GenerationRecord& g : r.state.history) {
+      k["candidates"] = k["candidates"].get<std::int64_t>() + g.capped_candidates;
+      k["capped_runs"] = k["capped_runs"].get<std::int64_t>() + g.capped_runs;
+      k["reruns"] = k["reruns"].get<std::int64_t>() + g.reruns;
+      k["ticks_capped"] = k["ticks_capped"].get<std::int64_t>() + g.ticks_capped;
+      k["ticks_rerun"] = k["ticks_rerun"].get<std::int64_t>() + g.ticks_rerun;
+    }
+    j["capping"] = k;
+  }
   if (c.reevaluate.race) {
     j["racing"] = {{"blocks", r.race.blocks},
                    {"simulations", r.race.simulations},

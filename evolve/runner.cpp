@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "evolve/capping.hpp"
 #include "evolve/report.hpp"
 #include "evolve/resume_check.hpp"
 #include "evolve/run_folder.hpp"
@@ -303,7 +304,10 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
     const std::vector<Decoded> decoded = decode_all(c.genome, xs);
     const std::vector<EvalCase> cases =
         generation_cases(result.settings, c.evaluation.seeds, c.seed, gen, fixed);
-    const std::vector<RunScore> scores = evaluate_batch(f, decoded, cases, evaluator, o.progress);
+    CappingTally capping;
+    const std::vector<RunScore> scores =
+        evaluate_generation(f, decoded, cases, c.evaluation, capping_keep(xs.size(), c.reevaluate.top_k),
+                            evaluator, o.progress, capping);
 
     // candidate means (in case order), then tell
     const std::size_t nc = cases.size();
@@ -315,6 +319,11 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
     // the generation's record, the best-so-far list, the checkpoint
     GenerationRecord rec;
     rec.generation = gen;
+    rec.capped_candidates = capping.censored;
+    rec.capped_runs = capping.capped_runs;
+    rec.reruns = capping.reruns;
+    rec.ticks_capped = capping.ticks_capped;
+    rec.ticks_rerun = capping.ticks_rerun;
     const auto best =
         static_cast<std::size_t>(std::min_element(fitness.begin(), fitness.end()) - fitness.begin());
     rec.best = fitness[best];
@@ -348,6 +357,7 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
     for (const Decoded& d : decoded) {
       if (d.violation.empty()) st.runs += static_cast<std::int64_t>(nc);
     }
+    st.runs += capping.reruns;  // capping: open runs run twice
     std::function<void(const RunState&)> write;
     if (files) write = [&](const RunState& now) { write_progress_files(c, now, o.out_dir); };
     if (finish_generation(st, rec, xs.size(), clock.recorded(), opt->state(), o, write)) {

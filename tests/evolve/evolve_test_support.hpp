@@ -69,6 +69,24 @@ inline std::string run_json_text(const std::filesystem::path& dir) {
   return j.dump(1);
 }
 
+/// Runs `c` into three folders: at 1 thread, at 2 threads, and 1 generation at 2 threads resumed
+/// to `generations` at 1 thread; expects the same files in all three; returns the first's run.json.
+inline nlohmann::json expect_same_at_threads_and_resume(const EvolveConfig& c, const CaseObjective& f,
+                                                        int generations) {
+  const std::filesystem::path one = scratch("t1"), two = scratch("t2"), split = scratch("split");
+  run_evolution(c, f, test_options(one, 1));
+  run_evolution(c, f, test_options(two, 2));
+  run_evolution(c, f, test_options(split, 2, 1));
+  run_evolution(c, f, test_options(split, 1, generations, /*resume=*/true));
+  for (const char* name : {"log.csv", "best.toml", "checkpoint.json"}) {
+    EXPECT_EQ(read_text(one / name), read_text(two / name)) << name;
+    EXPECT_EQ(read_text(one / name), read_text(split / name)) << name;
+  }
+  EXPECT_EQ(run_json_text(one), run_json_text(two));
+  EXPECT_EQ(run_json_text(one), run_json_text(split));
+  return nlohmann::json::parse(read_text(one / "run.json"));
+}
+
 /// A tiny config: short_chain at 8 robots, 3000 ticks, 2 seeds; three tuned parameters.
 inline std::string tiny_config(const std::string& optimizer = "random", int generations = 2,
                                const std::string& extra_tune = "") {

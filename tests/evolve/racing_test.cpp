@@ -18,11 +18,6 @@ namespace {
 
 using testing::FakeObjective;
 using testing::FixedOptimizer;
-using testing::read_text;
-using testing::run_json_text;
-using testing::scratch;
-
-namespace fs = std::filesystem;
 
 TEST(Racing, StudentTailMatchesTables) {
   EXPECT_NEAR(student_t_upper(0.0, 5.0), 0.5, 1e-12);
@@ -105,18 +100,7 @@ TEST(Racing, BitIdenticalAtOneAndTwoThreadsAndAfterResume) {
   const EvolveConfig c = raced_tiny(3);
   ASSERT_TRUE(c.reevaluate.race);
   const SwarmObjective f(c);
-  const fs::path one = scratch("t1"), two = scratch("t2"), split = scratch("split");
-  run_evolution(c, f, testing::test_options(one, 1));
-  run_evolution(c, f, testing::test_options(two, 2));
-  run_evolution(c, f, testing::test_options(split, 2, 1));
-  run_evolution(c, f, testing::test_options(split, 1, 3, /*resume=*/true));
-  for (const char* name : {"log.csv", "best.toml", "checkpoint.json"}) {
-    EXPECT_EQ(read_text(one / name), read_text(two / name)) << name;
-    EXPECT_EQ(read_text(one / name), read_text(split / name)) << name;
-  }
-  EXPECT_EQ(run_json_text(one), run_json_text(two));
-  EXPECT_EQ(run_json_text(one), run_json_text(split));
-  const nlohmann::json j = nlohmann::json::parse(read_text(one / "run.json"));
+  const nlohmann::json j = testing::expect_same_at_threads_and_resume(c, f, 3);
   EXPECT_EQ(j.at("racing").at("simulations_without_racing").get<int>(),
             3 * 2);  // 2 finalists + base, 2 seeds
   EXPECT_TRUE(j.at("finalists")[0].contains("dropped_after_blocks"));
