@@ -43,6 +43,7 @@ const std::array kAdditions{
   Addition{"seek_hidden_reference", "a reference out of view is looked for where it was", "§2.3 #11, #13", kBoth, {{{"seek_hidden_reference", 0}}}, {"align_keep_view"}},
   Addition{"nudge_parent", "a SUB_NEST closes in on a parent that stays RED", "§2.3 #9b", kBoth, {{{"nudge_parent", 0}}}, {}},
   Addition{"relink_recovery", "a SUB_NEST takes a RECOVERY parent's parent", "§2.3 #17", kBoth, {{{"relink_recovery", 0}}}, {}},
+  Addition{"chain_repair", "a chain robot whose neighbour's light is gone mends the chain", "§2.3 #18-#20", kBoth, {{{"chain_repair", 0}}}, {}},
   // task allocation
   Addition{"late_founder_rests", "a founder that hears ALLOC_DONE first rests", "§2.6 T7f", kTa, {{{"late_founder_rests", 0}}}, {}},
   Addition{"resend_lost_ack", "a repeated JOIN is ACKed again, not counted", "§2.6 protocol", kTa, {{{"resend_lost_ack", 0}}}, {}},

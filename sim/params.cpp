@@ -177,7 +177,7 @@ const std::array kTable{
   ParamInfo{ 0, "relink_recovery", B, &P::relink_recovery, 1, 0, 1, 1, "", "",
             "a SUB_NEST robot whose parent turned RECOVERY during an alignment (row #13) drives toward it (v_align v_max, round corners along their edge, to r_rec from it) until it sees that robot's own parent (the tag its light carries), and takes it as its parent (row #17). Off: it waits for ever, and the chain with it",
             "§2.3 #17", {}},
-  ParamInfo{ 0, "chain_repair", B, &P::chain_repair, 0, 0, 1, 1, "", "",
+  ParamInfo{ 0, "chain_repair", B, &P::chain_repair, 1, 0, 1, 1, "", "",
             "a chain robot (RED, BLUE or BROWN) that has not seen a neighbour's link light for T_repair ticks (it failed and went dark, or shows another colour) mends the chain: its parent gone, it takes the robot the parent's light named as its parent (the goal or the next link goalward) when that one is in view (row #18), else it leaves the chain for the nest, as its own children then do in turn (row #19); its child gone, it turns RED again, the chain's tip, from which the chain re-forms toward the nest (row #20). Off: a chain with a gap waits for ever (docs/faults.md)",
             "§2.3 #18-#20", {}},
   ParamInfo{ 0, "T_repair", R, &P::t_repair, 50, 5, 5000, 5, "", "ticks",

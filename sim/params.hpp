@@ -114,8 +114,8 @@ struct Params {
   bool nudge_parent = true;           ///< row #9b: a SUB_NEST closes in on a parent still RED after T_nudge
   double t_nudge = 100;               ///< nudge_parent: ticks a sub-nest waits first [ticks]
   bool relink_recovery = true;  ///< row #17: a SUB_NEST replaces a RECOVERY parent by that robot's parent
-  bool chain_repair = false;  ///< rows #18-#20: a chain robot whose neighbour's light is gone mends the chain
-  double t_repair = 50;       ///< chain_repair: ticks a neighbour's light is gone before it counts as gone
+  bool chain_repair = true;  ///< rows #18-#20: a chain robot whose neighbour's light is gone mends the chain
+  double t_repair = 50;      ///< chain_repair: ticks a neighbour's light is gone before it counts as gone
   // task allocation (SPEC §2.6, §2.7)
   bool late_founder_rests = true;  ///< T7f: a founder that hears ALLOC_DONE before it allocates rests
   bool resend_lost_ack = true;    ///< protocol: a JOIN from a robot already ACKed is ACKed again, not counted

@@ -146,6 +146,7 @@ TEST(ChainRepair, ABrokenChainInASmallArenaFormsItsPathOnlyWithTheRule) {
   // home also come back to a broken chain's end, and seed 8 forms its path without the rule
   Params spec_lost;
   spec_lost.form_retries = 0;
+  spec_lost.chain_repair = false;
   Params repairing_spec_lost = repairing();
   repairing_spec_lost.form_retries = 0;
   for (const std::uint64_t seed : {2, 4, 8}) {
