@@ -10,6 +10,19 @@ namespace {
 
 constexpr int kMaxNear = 64;
 
+// Far above the rounding of the exact tests below (values of order 1 m, errors of order 1e-16 m):
+// a shortcut that skips an exact test only when it clears this margin changes no answer.
+constexpr double kSafeMargin = 1e-9;  // [m]
+
+// True when p is farther than `reach` from every point of the shape's bounding box, by more than
+// kSafeMargin, so that signed_distance(shape, p) > reach too: most near-bin shapes are this far,
+// and the box test spares their exact distance (a hypot).
+bool beyond_bounds(const Shape& sh, Vec2 p, double reach) {
+  const double r = reach + kSafeMargin;
+  return p.x - sh.bounds.hi.x > r || sh.bounds.lo.x - p.x > r || p.y - sh.bounds.hi.y > r ||
+         sh.bounds.lo.y - p.y > r;
+}
+
 // The shapes of `bins` near p that truly come within `reach` of it, in a small local list.
 // (Plain arrays: left uninitialised, they cost nothing per call.)
 struct NearShapes {
@@ -20,7 +33,8 @@ struct NearShapes {
 
   NearShapes(const SensorView& v, const ShapeBins& bins, Vec2 p, double reach) : bin(bins.near(p)) {
     for (const int s : bin) {
-      if (signed_distance(v.shapes[static_cast<std::size_t>(s)], p) > reach) continue;
+      const Shape& sh = v.shapes[static_cast<std::size_t>(s)];
+      if (beyond_bounds(sh, p, reach) || signed_distance(sh, p) > reach) continue;
       if (count == kMaxNear) {
         overflow = true;
         break;
@@ -125,8 +139,21 @@ void sense_proximity(const SensorView& v, int id, std::array<double, kProximityC
     const Vec2 pb = unrotate(me.p - sh.center, sh.c, sh.s);
     const double cr = me.c * sh.c + me.s * sh.s;  // robot heading relative to the box
     const double sr = me.s * sh.c - me.c * sh.s;
+    // Outside a slab by g (|pb.x| - half.x = g > 0), a ray enters it within its length only if
+    // it heads into it steeply enough: its start R d and its reach (R + kRange) d give
+    // side * d.x <= -g / reach, side the sign of pb.x. A ray pointing elsewhere misses the box
+    // (its slab test below would find t0 > t1), so it is skipped before the test's divisions.
+    const auto slab_limit = [&](double centre, double half) {
+      const double g = std::fabs(centre) - half;
+      return g > 0.0 ? -g / reach + kSafeMargin : kNoHit;
+    };
+    const double side_x = pb.x > 0.0 ? 1.0 : -1.0;
+    const double side_y = pb.y > 0.0 ? 1.0 : -1.0;
+    const double limit_x = slab_limit(pb.x, sh.half.x);
+    const double limit_y = slab_limit(pb.y, sh.half.y);
     for (std::size_t k = 0; k < kProximityCount; ++k) {
       const Vec2 d = rotate(dirs[k], cr, sr);
+      if (side_x * d.x > limit_x || side_y * d.y > limit_y) continue;
       const Vec2 o = pb + R * d;
       double t0 = 0.0;
       double t1 = std::min(kRange, best[k]);
