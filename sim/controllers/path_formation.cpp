@@ -92,7 +92,7 @@ namespace {
 // #7a stop_at_view_edge, #7h form_retries (rows #7 and #8b go home instead, docs/detours.md),
 // #15-#16 chain_bypass, #17 relink_recovery, #18-#20 chain_repair (before the rows that would act on
 // a gone neighbour).
-const std::array<PfTransition, 34> kTable{{
+constexpr std::array<PfTransition, 34> kTable{{
   {PfState::kExploring,      found_goal_or_subgoal,        PfState::kSubgoalForming, take_target,           "#1",  "c"},
   {PfState::kExploring,      exploration_time_over,        PfState::kReturnToNest,   nullptr,               "#2",  "b"},
   {PfState::kReturnToNest,   found_on_the_way_home,        PfState::kSubgoalForming, take_target,           "#1h", "c"},
@@ -130,6 +130,9 @@ const std::array<PfTransition, 34> kTable{{
 }};
 
 // clang-format on
+
+constexpr auto kRowsOf = rows_by_state<kPfStateCount>(kTable);
+static_assert(kRowsOf.begin[kPfStateCount] == kTable.size(), "a row whose state is out of range");
 
 // What every transition starts afresh: the navigator, the legs of the state it enters (forming's
 // are set by the row's action), the chain's bookkeeping; a new trip (row #4) starts its trail.
@@ -184,9 +187,9 @@ std::span<const PfTransition> pf_transitions() { return kTable; }
 std::uint8_t pf_row_number(std::string_view row) { return row_number(pf_transitions(), row); }
 
 const PfTransition* pf_transition(const PfContext& c, PfMemory& m) {
-  for (std::size_t i = 0; i < kTable.size(); ++i) {
+  for (const std::size_t i : kRowsOf.of(static_cast<std::size_t>(m.state))) {
     const PfTransition& row = kTable[i];
-    if (row.from != m.state || !row.when(c)) continue;
+    if (!row.when(c)) continue;
     if (row.act != nullptr) row.act(c, m);
     m.state = row.to;
     m.t_state = 0;

@@ -197,7 +197,7 @@ void refound(const TaContext& c, RobotMemory& mem) {
 // states, T4 (the founder at the nest runs the protocol) inside the founder's behaviour. Rows with a
 // letter or a number past 9 are [R] (docs/CHOICES.md): T7f late_founder_rests, T10 rest_recruit and
 // recruit_call, T11-T12 refound_starved.
-const std::array<TaTransition, 12> kTable{{
+constexpr std::array<TaTransition, 12> kTable{{
   {TaState::kScout,         found_the_goal,               TaState::kGoalFounder,   become_founder,    "T2",  "c"},
   {TaState::kScout,         allocation_over,              TaState::kRestingTask,   nullptr,           "T7",  "d"},
   {TaState::kScout,         learned_of_the_goal,          TaState::kDecisionMaker, nullptr,           "T3",  "f"},
@@ -213,6 +213,9 @@ const std::array<TaTransition, 12> kTable{{
 }};
 
 // clang-format on
+
+constexpr auto kRowsOf = rows_by_state<kTaStateCount>(kTable);
+static_assert(kRowsOf.begin[kTaStateCount] == kTable.size(), "a row whose state is out of range");
 
 bool joined(std::uint8_t founder, std::span<const RabMessage> inbox) {
   for (const RabMessage& r : inbox) {
@@ -300,9 +303,9 @@ void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaS
 }
 
 const TaTransition* ta_transition(const TaContext& c, RobotMemory& mem) {
-  for (std::size_t i = 0; i < kTable.size(); ++i) {
+  for (const std::size_t i : kRowsOf.of(static_cast<std::size_t>(mem.ta.state))) {
     const TaTransition& row = kTable[i];
-    if (row.from != mem.ta.state || !row.when(c)) continue;
+    if (!row.when(c)) continue;
     if (row.act != nullptr) row.act(c, mem);
     mem.ta.state = row.to;
     mem.ta.t_state = 0;
