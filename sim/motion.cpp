@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 #include "motion.hpp"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace swarmpath::sim {
 
@@ -13,6 +15,11 @@ Vec2 proximity_vector(const std::array<double, kProximityCount>& proximity) {
 }
 
 Avoidance diffusion(const std::array<double, kProximityCount>& proximity, const Params& p) {
+  // nothing in range, the usual case (every reading +0 or -0, their bits but the sign 0): the sum
+  // below would be (+0, +0), so its length 0
+  std::uint64_t bits = 0;
+  for (const double r : proximity) bits |= std::bit_cast<std::uint64_t>(r);
+  if ((bits << 1) == 0) return {};
   const Vec2 s = proximity_vector(proximity);
   const double len = norm(s);
   if (len == 0.0) return {};  // nothing in range: straight ahead (angle 0, length 0)
