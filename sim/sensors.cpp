@@ -209,11 +209,14 @@ void sense_camera(const SensorView& v, int id, std::vector<Blob>& out) {
 
 void sense_rab(const SensorView& v, int id, RabKinds interest, std::vector<RabMessage>& out) {
   const Pose& me = v.poses[static_cast<std::size_t>(id)];
-  std::optional<NearShapes> near;        // found when the first message in range needs its line of sight
+  std::optional<NearShapes> near;           // found when the first message in range needs its line of sight
+  const auto heard_in_row = [&](int row) {  // a row of cells some robot of which sent a kind it reads
+    return (v.rab_row_kinds[static_cast<std::size_t>(row)] & interest) != 0;
+  };
   const auto heard_in = [&](int cell) {  // a cell some robot of which sent a kind it reads
     return (v.rab_cell_kinds[static_cast<std::size_t>(cell)] & interest) != 0;
   };
-  v.grid->for_each_within(me.p, kRabRange, heard_in, [&](int j, Vec2 pj) {
+  v.grid->for_each_within(me.p, kRabRange, heard_in_row, heard_in, [&](int j, Vec2 pj) {
     if (j == id || (v.rab_kinds[static_cast<std::size_t>(j)] & interest) == 0) return;
     if (!near) near.emplace(v, *v.rab_bins, me.p, kRabRange);
     if (blocked_by_statics(v, *near, me.p, pj)) return;

@@ -24,6 +24,7 @@ struct SensorView {
   std::span<const RabKinds> rab_kinds;  ///< the kinds of each robot's message (0: it sent none)
   /// per grid cell, its robots' rab_kinds or'ed (World::rab_cell_kinds: sense_all and step tally it)
   std::span<const RabKinds> rab_cell_kinds;
+  std::span<const RabKinds> rab_row_kinds;  ///< the same per row of cells (World::rab_row_kinds)
   const RobotGrid* grid = nullptr;
   std::span<const Shape> shapes;           ///< every obstacle and wall
   const ShapeBins* touch_bins = nullptr;   ///< shapes within proximity reach of a cell

@@ -114,15 +114,17 @@ class RobotGrid {
     }
   }
 
-  /// The same, skipping every cell c for which keep(c) is false (the others in the same order).
-  template <typename Keep, typename F>
-  void for_each_within(Vec2 p, double r, Keep&& keep, F&& f) const {
+  /// The same, skipping every row of cells j for which keep_row(j) is false and every cell c for
+  /// which keep(c) is false (the others in the same order).
+  template <typename KeepRow, typename Keep, typename F>
+  void for_each_within(Vec2 p, double r, KeepRow&& keep_row, Keep&& keep, F&& f) const {
     const int i0 = frame_.cell_x(p.x - r);
     const int i1 = frame_.cell_x(p.x + r);
     const int j0 = frame_.cell_y(p.y - r);
     const int j1 = frame_.cell_y(p.y + r);
     const double r2 = r * r;
     for (int j = j0; j <= j1; ++j) {
+      if (!keep_row(j)) continue;
       for (int c = j * frame_.nx + i0; c <= j * frame_.nx + i1; ++c) {
         if (!keep(c)) continue;
         const int end = start_[static_cast<std::size_t>(c) + 1];
@@ -134,8 +136,11 @@ class RobotGrid {
     }
   }
 
-  /// How many cells; the cell robot `id` was in at the last build.
+  /// How many cells, and how many of them make a row (cell c lies in row c / columns()); the cell
+  /// robot `id` was in at the last build.
   std::size_t cells() const { return frame_.cells(); }
+
+  std::size_t columns() const { return static_cast<std::size_t>(frame_.nx); }
 
   int cell_of(int id) const { return cell_of_[static_cast<std::size_t>(id)]; }
 

@@ -14,6 +14,7 @@ SensorView sensor_view(const Scenario& s, const Params& p, const World& w) {
   view.rab_out = w.rab_out;
   view.rab_kinds = w.rab_kinds;
   view.rab_cell_kinds = w.rab_cell_kinds;
+  view.rab_row_kinds = w.rab_row_kinds;
   view.grid = &w.grid;
   view.shapes = w.shapes;
   view.touch_bins = &w.touch_bins;
@@ -56,12 +57,15 @@ void sense_robot(const SensorView& view, const Params& p, World& w, std::size_t 
   if (listens) rab_noise(w.faults.model, noise.rab, inbox, inbox_from);
 }
 
-// World::rab_cell_kinds from this tick's grid and last tick's messages.
+// World::rab_cell_kinds and rab_row_kinds from this tick's grid and last tick's messages.
 void tally_rab_cells(World& w) {
   if (!w.needs.rab) return;
   w.rab_cell_kinds.assign(w.grid.cells(), 0);
+  w.rab_row_kinds.assign(w.grid.cells() / w.grid.columns(), 0);
   for (std::size_t i = 0; i < w.rab_kinds.size(); ++i) {
-    w.rab_cell_kinds[static_cast<std::size_t>(w.grid.cell_of(static_cast<int>(i)))] |= w.rab_kinds[i];
+    const auto cell = static_cast<std::size_t>(w.grid.cell_of(static_cast<int>(i)));
+    w.rab_cell_kinds[cell] |= w.rab_kinds[i];
+    w.rab_row_kinds[cell / w.grid.columns()] |= w.rab_kinds[i];
   }
 }
 

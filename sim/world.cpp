@@ -155,6 +155,7 @@ World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t se
   w.grid.reset(grid_bounds(s), s.sim.grid_cell, n);
   w.grid.build(w.positions);
   w.rab_cell_kinds.assign(w.grid.cells(), 0);  // nobody has sent yet
+  w.rab_row_kinds.assign(w.grid.cells() / w.grid.columns(), 0);
 
   // step() senses one robot at a time (sense_all sizes the per-robot buffers when first called)
   if (w.needs.camera) w.blobs.reserve(64);

@@ -41,6 +41,8 @@ struct World {
   /// Per cell of `grid`: the kinds its robots broadcast last tick (their rab_kinds or'ed), so that a
   /// listener skips the cells that hold nothing it reads. Tallied as a tick's sensing starts.
   std::vector<RabKinds> rab_cell_kinds;
+  /// The same per row of cells (its cells' kinds or'ed): a listener skips a row at once.
+  std::vector<RabKinds> rab_row_kinds;
   /// The medium hands each robot only the kinds of message it reads (rab_interest); false: every
   /// message to every robot that listens (what the readers then see is the same, at more cost).
   /// make_world sets it false under packet loss, which draws a loss for every message handed out.
