@@ -10,6 +10,15 @@ namespace {
 constexpr double kSpacing = 0.25;  // [m] between crumbs
 constexpr double kNear = 0.25;     // [m] under a 30 cm wall plus two robot radii (47 cm)
 
+// dist(p, c) < kNear, deciding most crumbs by the squared distance alone: a square above kNear^2
+// by the margin (far above the rounding of either side) has a root above kNear, so only the
+// crumbs close to the circle take the square root, and every answer is the same.
+bool near_crumb(Vec2 p, Vec2 c) {
+  constexpr double kFarSquared = kNear * kNear * (1.0 + 1e-9);
+  const double d2 = norm2(p - c);
+  return d2 < kFarSquared && std::sqrt(d2) < kNear;
+}
+
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
   const double len2 = dot(ab, ab);
@@ -28,7 +37,7 @@ void Trail::record(Vec2 p) {
   if (count_ > 0 && dist(p, crumbs_[static_cast<std::size_t>(count_ - 1)]) < kSpacing) return;
   // loop erasure: back near an earlier crumb, the way since then was a detour
   for (int i = 0; i + 2 < count_; ++i) {
-    if (dist(p, crumbs_[static_cast<std::size_t>(i)]) < kNear) {
+    if (near_crumb(p, crumbs_[static_cast<std::size_t>(i)])) {
       count_ = i + 1;
       reached_ = i;
       return;
@@ -64,7 +73,7 @@ void Trail::thin() {
 
 void Trail::touch(Vec2 p) {
   for (int i = 0; i < reached_; ++i) {
-    if (dist(p, crumbs_[static_cast<std::size_t>(i)]) < kNear) {
+    if (near_crumb(p, crumbs_[static_cast<std::size_t>(i)])) {
       reached_ = i;
       return;
     }
