@@ -23,6 +23,18 @@ bool beyond_bounds(const Shape& sh, Vec2 p, double reach) {
          sh.bounds.lo.y - p.y > r;
 }
 
+// signed_distance(sh, p) > reach, the same answer without a box's hypot where p lies within one of
+// its slabs (the distance is then the gap to the other, hypot(g, 0) = g), the usual case beside a
+// wall; only points off a corner within reach take it.
+bool farther_than(const Shape& sh, Vec2 p, double reach) {
+  if (sh.kind != ShapeKind::kBox) return signed_distance(sh, p) > reach;
+  const Vec2 q = unrotate(p - sh.center, sh.c, sh.s);
+  const double dx = std::fabs(q.x) - sh.half.x;
+  const double dy = std::fabs(q.y) - sh.half.y;
+  if (dx > 0.0 && dy > 0.0) return dx > reach || dy > reach || signed_distance(sh, p) > reach;
+  return std::max(std::max(dx, dy), 0.0) + std::min(std::max(dx, dy), 0.0) > reach;
+}
+
 // The shapes of `bins` near p that truly come within `reach` of it, in a small local list.
 // (Plain arrays: left uninitialised, they cost nothing per call.)
 struct NearShapes {
@@ -34,7 +46,7 @@ struct NearShapes {
   NearShapes(const SensorView& v, const ShapeBins& bins, Vec2 p, double reach) : bin(bins.near(p)) {
     for (const int s : bin) {
       const Shape& sh = v.shapes[static_cast<std::size_t>(s)];
-      if (beyond_bounds(sh, p, reach) || signed_distance(sh, p) > reach) continue;
+      if (beyond_bounds(sh, p, reach) || farther_than(sh, p, reach)) continue;
       if (count == kMaxNear) {
         overflow = true;
         break;
