@@ -186,9 +186,11 @@ int run_ablate(const AblateOptions& o, const evolve::EvaluatorFactory& evaluator
   if (o.robots.empty()) throw sim::ConfigError("--robots", 0, "", "give at least one robot count");
   std::vector<sim::Mode> modes;
   for (const std::string& m : o.modes) {
-    const sim::Mode mode = mode_from_option(m);
-    if (mode == sim::Mode::kDiffusion) throw sim::ConfigError("--modes", 0, m, "must be pf or ta");
-    if (std::find(modes.begin(), modes.end(), mode) == modes.end()) modes.push_back(mode);
+    if (m != "both" && mode_from_option(m) == sim::Mode::kDiffusion)
+      throw sim::ConfigError("--modes", 0, m, "must be pf, ta or both");
+    for (const sim::Mode mode : path_modes(m)) {
+      if (std::find(modes.begin(), modes.end(), mode) == modes.end()) modes.push_back(mode);
+    }
   }
   std::sort(modes.begin(), modes.end());
   std::vector<Arm> arms;

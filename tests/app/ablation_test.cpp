@@ -133,6 +133,13 @@ TEST(AblateCli, RowsPerArmAndModeAndTheCacheGivesTheSameTable) {
   ASSERT_EQ(again.code, 0) << again.err;
   EXPECT_NE(again.err.find("4 variants from the cache"), std::string::npos) << again.err;
   EXPECT_EQ(read_json(dir / "a.json"), j);
+  // --modes both is pf and ta: the same runs, so the same cache entries and rows
+  std::vector<std::string> both = small_ablation(dir, "default,literal", "w_seek,depart_gap");
+  both.insert(both.end(), {"--modes", "both"});
+  const auto with_both = cli(both);
+  ASSERT_EQ(with_both.code, 0) << with_both.err;
+  EXPECT_NE(with_both.err.find("4 variants from the cache"), std::string::npos) << with_both.err;
+  EXPECT_EQ(read_json(dir / "a.json"), j);
 }
 
 TEST(AblateCli, RejectsAnUnknownAdditionOrArm) {
