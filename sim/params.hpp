@@ -111,8 +111,6 @@ struct Params {
   bool align_taper = true;      ///< §2.4: speed tapers onto P; avoidance only when something is sensed
   bool r_keep_pull = true;      ///< §2.4: a robot farther than R_keep from a reference drives back to it
   bool seek_hidden_reference = true;  ///< rows #11, #13: a reference out of view is looked for where it was
-  bool nudge_parent = true;           ///< row #9b: a SUB_NEST closes in on a parent still RED after T_nudge
-  double t_nudge = 100;               ///< nudge_parent: ticks a sub-nest waits first [ticks]
   bool relink_recovery = true;  ///< row #17: a SUB_NEST replaces a RECOVERY parent by that robot's parent
   bool chain_repair = true;  ///< rows #18-#20: a chain robot whose neighbour's light is gone mends the chain
   double t_repair = 50;      ///< chain_repair: ticks a neighbour's light is gone before it counts as gone

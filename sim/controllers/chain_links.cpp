@@ -108,26 +108,21 @@ void leave_chain(const PfContext&, PfMemory& m) {
 
 // ---- SUB_NEST ----
 
-// The camera's view of a corner need not be mutual, so a parent can be waited for for ever: one still
-// RED T_nudge ticks on, which sees this robot only from its own side past a corner, if at all, and so
-// never took row 9b (R, nudge_parent: close in on it while the child stays in view); one out of view,
-// behind a corner (R, seek_hidden_reference); or one that turned RECOVERY in its alignment (row 13),
-// whose own parent this robot looks for (R, relink_recovery; row 17 takes it). For these two, go round
-// the corner toward where the parent was last seen, the child in view or not: under a wall's tip a
-// robot may see neither
+// The camera's view of a corner need not be mutual, so a parent can be waited for for ever: one out of
+// view, behind a corner (R, seek_hidden_reference), or one that turned RECOVERY in its alignment (row
+// 13), whose own parent this robot looks for (R, relink_recovery; row 17 takes it). Go round the
+// corner toward where the parent was last seen, the child in view or not: under a wall's tip a robot
+// may see neither
 Command wait_for_parent(const Percept& in, const Params& p, RobotMemory& mem) {
   const PfMemory& m = mem.pf;
   const PfState s = PfState::kSubNest;
-  // (the three exclude each other: the parent out of view, in view and RED, in view and ORANGE)
+  // (the two exclude each other: the parent out of view, in view and ORANGE)
   const bool hidden = p.seek_hidden_reference && lost(m.parent, p);
-  const bool blind = p.nudge_parent && m.parent.visible && m.parent.color == Led::kRed &&
-                     static_cast<double>(m.t_state) >= p.t_nudge;
   const bool broken = p.relink_recovery && m.parent.visible && m.parent.color == Led::kOrange;
-  if (!(hidden || blind || broken) || (blind && lost(m.child, p))) return pf_stop(s);
+  if (!(hidden || broken)) return pf_stop(s);
   const Vec2 toward = local_cm(in.pose, m.parent);
   // (a broken link: to the edge of its repulsion, since its parent stands up to d_sub beyond it)
   if (norm(toward) <= (broken ? p.r_rec : p.d_detect)) return pf_stop(s);
-  if (blind) return look_for(in, p, mem, toward, s);
   const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, m.parent.last_seen);
   const Vec2 v = with_avoidance(in, p, mem.nav, f);
   return pf_drive(p, mem, p.v_align * p.v_max * v, s);

@@ -69,9 +69,8 @@ void grandparent_becomes_parent(const PfContext& c, PfMemory& m);
 void heir_becomes_parent(const PfContext& c, PfMemory& m);
 void leave_chain(const PfContext& c, PfMemory& m);
 
-/// SUB_NEST (LED blue): waits for its parent to be done (row #11), closing in on one that cannot
-/// see it (nudge_parent), one out of view (seek_hidden_reference) or one broken off
-/// (relink_recovery).
+/// SUB_NEST (LED blue): waits for its parent to be done (row #11), closing in on one out of view
+/// (seek_hidden_reference) or one broken off (relink_recovery).
 Command wait_for_parent(const Percept& in, const Params& p, RobotMemory& mem);
 
 /// What the robot advertises: its light's tag (its parent, its target while forming, a guide's hop

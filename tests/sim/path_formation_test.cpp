@@ -839,8 +839,7 @@ TEST(SightingReturns, NothingFreeWhereTheTipWasEndsTheTrip) {
   EXPECT_EQ(off.pf.state, PfState::kExploring);
 }
 
-// [R nudge_parent] a corner's view need not be mutual: the parent still RED T_nudge ticks after
-// this robot turned BLUE has not seen it; the sub-nest closes in on it, at most to d_detect
+// a SUB_NEST robot that has waited `ticks` ticks, its parent ahead and its child behind
 RobotMemory sub_nest_for(std::int64_t ticks) {
   RobotMemory mem = init_memory(Mode::kPathFormation, kMe, {{0.0, 0.0}, 1.0, 0.0}, kNest, Params{}, 1);
   mem.pf.state = PfState::kSubNest;
@@ -848,28 +847,6 @@ RobotMemory sub_nest_for(std::int64_t ticks) {
   mem.pf.parent = tracked(7, {0.7, 0.0});
   mem.pf.child = tracked(12, {-0.7, 0.0});
   return mem;
-}
-
-TEST(NudgeParent, ASubNestClosesInOnAParentStillRedAfterTNudge) {
-  const Params p;
-  const auto wheels = [&](Led parent_led, double distance_cm, std::int64_t waited, const Params& q) {
-    RobotMemory mem = sub_nest_for(waited);
-    mem.pf.parent.last_seen = {distance_cm / 100.0, 0.0};
-    Reading r;
-    r.add(parent_led, 7, 0, distance_cm);
-    r.add(Led::kBlue, 12, 180, 70, kMe);
-    const Command cmd = path_formation_step(r.percept(), q, mem);
-    EXPECT_EQ(mem.pf.state, PfState::kSubNest);
-    return cmd.left_cm_s + cmd.right_cm_s;
-  };
-  const auto late = static_cast<std::int64_t>(p.t_nudge);                // the step counts this tick first
-  EXPECT_NEAR(wheels(Led::kRed, 70, late - 2, p), 0.0, 1e-9);            // not yet: the parent may turn
-  EXPECT_GT(wheels(Led::kRed, 70, late, p), 0.0);                        // forward, toward the parent
-  EXPECT_NEAR(wheels(Led::kMagenta, 70, late, p), 0.0, 1e-9);            // it turned (optimisation 1): stay
-  EXPECT_NEAR(wheels(Led::kRed, 0.9 * p.d_detect, late, p), 0.0, 1e-9);  // close enough
-  Params off = p;
-  off.nudge_parent = false;
-  EXPECT_NEAR(wheels(Led::kRed, 70, late, off), 0.0, 1e-9);
 }
 
 // [R relink_recovery] a SUB_NEST robot whose parent turned RECOVERY (ORANGE, row 13) closes in on it
