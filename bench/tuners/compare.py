@@ -15,6 +15,7 @@ candidates x runs each, plus the finalists' re-evaluation), threads simulations 
 base params as its starting point:
   swarmpath-<optimiser>  `swarmpath evolve` with the config (optimiser replaced, population kept),
                           master seed = tuner seed; the pick is its best.toml.
+  swarmpath-cmaes-capped  the same with `[evaluation] capping = true` (docs/racing.md).
   irace                   `swarmpath irace` scenario, irace's seed = tuner seed, maxExperiments =
                           the budget; the pick is irace's best (elite 1), `swarmpath irace import`.
   optuna-<sampler>        examples/optuna_tune.py's study: budget / runs-per-trial trials, every
@@ -24,7 +25,9 @@ Finals: the picks and the base params on the same fresh seeds (final-seeds per s
 tuner saw), scored by swarmpath.Objective. Each tuning run is a child process timed by wall clock
 and by CPU time (its own and that of everything it waited for); --jobs runs several at once on a
 machine with the cores for it. Each step keeps its results under --out, and a tuning run that
-finished is not run again, so the steps can be split over several sittings.
+finished is not run again, so the steps can be split over several sittings; finals reuse a pick's
+runs from an earlier finals on the same cases (runs/NAME/final.json), so adding tuners or seeds later
+runs only the new picks.
 """
 import argparse
 import json
@@ -41,7 +44,14 @@ ROOT = pathlib.Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "examples"))
 sys.path.append(str(ROOT / "build" / "release" / "python"))  # the module, unless PYTHONPATH has one
 
-TUNERS = ["swarmpath-cmaes", "swarmpath-ga", "swarmpath-random", "irace", "optuna-tpe", "optuna-cmaes"]
+# swarmpath's optimisers with switches of the problem config turned on: name -> (optimiser, {section: lines
+# added under it}); the problem itself (params, settings, fitness, budget) stays as it is
+VARIANTS = {
+    # adaptive capping (docs/racing.md): a generation's runs first go to half of T_max; the candidates
+    # that cannot reach the top are stopped there, so the same finalists for fewer simulated ticks
+    "swarmpath-cmaes-capped": ("cmaes", {"evaluation": ["capping = true"]}),
+}
+TUNERS = ["swarmpath-cmaes", "swarmpath-ga", "swarmpath-random", *VARIANTS, "irace", "optuna-tpe", "optuna-cmaes"]
 FINAL_SEED_BASE = 7_000_000_000  # final seeds 7e9 + k: no tuner draws these (evolve mixes 64-bit seeds,
 # irace's are below 2^31)
 
@@ -69,7 +79,10 @@ def config_copy(problem, tuner, seed, out):
     assert n == 1, "the problem config needs one top-level `seed = N` line"
     text = re.sub(r'(?m)^name = "[^"]*"$', f'name = "{tuner}-s{seed}"', text, count=1)
     if tuner.startswith("swarmpath-"):
-        optimiser = tuner[len("swarmpath-"):]
+        optimiser, added = VARIANTS.get(tuner, (tuner[len("swarmpath-"):], {}))
+        for section, lines in added.items():
+            text, n = re.subn(rf"(?m)^\[{section}\]$", lambda m: m.group(0) + "\n" + "\n".join(lines), text)
+            assert n == 1, f"the problem config needs one [{section}] section"
         if optimiser != "cmaes":
             # the same candidates per generation as CMA-ES, so the same generations fit the budget
             import swarmpath
@@ -96,7 +109,10 @@ def run_swarmpath(config, tuner, seed, d, threads):
     # the generations' runs and the finalists' on the fresh training cases (the base params' reference
     # runs on them choose nothing and are left out, as for the other tuners)
     fresh = sum(1 for k in run["seeds"]["reevaluation"] if not k["held_out"])
-    return {"simulations": run["runs"] + len(run["finalists"]) * fresh, "generations": run["generations"]}
+    meta = {"simulations": run["runs"] + len(run["finalists"]) * fresh, "generations": run["generations"]}
+    if "capping" in run:  # runs stopped at the cap count as runs, runs started again count twice
+        meta["capping"] = run["capping"]
+    return meta
 
 
 def run_irace(config, tuner, seed, d, threads):
@@ -181,6 +197,9 @@ def cmd_run(a):
 
 
 def cmd_finals(a):
+    """Every pick and the base params on the same fresh cases. A pick's runs are kept next to it
+    (final.json, with the cases and its full params): a later finals with the same cases and the same
+    params reuses them (the runs are deterministic), so adding tuners or seeds runs only the new picks."""
     import swarmpath
 
     out = pathlib.Path(a.out)
@@ -189,18 +208,32 @@ def cmd_finals(a):
     train = [i for i, s in enumerate(f.settings) if not s["held_out"]]
     cases = [swarmpath.Case(s, k, FINAL_SEED_BASE + i * a.final_seeds + k) for i, s in enumerate(train)
              for k in range(a.final_seeds)]
+    case_list = [[x.setting, x.seed] for x in cases]
     picks = {"base": c.base}
+    cache = {"base": out / "base-final.json"}
     for d in sorted((out / "runs").glob("*/meta.json")):
         picks[d.parent.name] = swarmpath.Params.load(str(d.parent / "pick.toml"))
+        cache[d.parent.name] = d.parent / "final.json"
+    results, todo = {}, []
+    for name, params in picks.items():
+        old = json.loads(cache[name].read_text()) if cache[name].exists() else None
+        if old and old["cases"] == case_list and old["params"] == params.to_dict():
+            results[name] = old["result"]
+        else:
+            todo.append(name)
     t0 = time.perf_counter()
-    stats = f.evaluate(list(picks.values()), cases, threads=a.threads)
-    finals = {"cases": [[x.setting, x.seed] for x in cases], "seconds": time.perf_counter() - t0, "picks": {}}
-    for name, s in zip(picks, stats):
-        finals["picks"][name] = {"fitness": s["fitness"], "success_rate": s["success_rate"],
-                                 "mean_ticks": s["mean_ticks"], "runs": [r["fitness"] for r in s["scores"]],
-                                 "values": {g["name"]: picks[name][g["name"]] for g in c.genes}}
+    stats = f.evaluate([picks[n] for n in todo], cases, threads=a.threads) if todo else []
+    seconds = time.perf_counter() - t0
+    for name, s in zip(todo, stats):
+        results[name] = {"fitness": s["fitness"], "success_rate": s["success_rate"], "mean_ticks": s["mean_ticks"],
+                         "runs": [r["fitness"] for r in s["scores"]],
+                         "values": {g["name"]: picks[name][g["name"]] for g in c.genes}}
+        cache[name].write_text(json.dumps({"cases": case_list, "params": picks[name].to_dict(),
+                                           "result": results[name]}))
+    finals = {"cases": case_list, "seconds": seconds, "evaluated": todo, "picks": {n: results[n] for n in picks}}
     (out / "finals.json").write_text(json.dumps(finals, indent=1))
-    print(f"finals: {len(picks)} picks x {len(cases)} fresh runs in {finals['seconds']:.0f} s")
+    print(f"finals: {len(todo)} picks x {len(cases)} fresh runs in {seconds:.0f} s "
+          f"({len(picks) - len(todo)} more from earlier finals on the same runs)")
 
 
 # Student's t quantile (0.975) for small samples, then the normal's

@@ -39,3 +39,24 @@ def test_compare_runs_every_tuner_on_one_budget(sp, tmp_path):
     assert sp.Objective(config).evaluate(config.base, cases)["fitness"] == finals["picks"]["base"]["fitness"]
     svg = open(tmp_path / "docs" / "tuners.svg").read()
     assert svg.startswith("<svg") and "base params" in svg and "irace" in svg
+
+
+def test_capped_variant_keeps_the_pick_and_finals_reuse_earlier_runs(sp, tmp_path):
+    out = str(tmp_path / "tuners")
+    compare("run", "--out", out, "--tuners", "swarmpath-cmaes,swarmpath-cmaes-capped", "--seeds", "1", "--threads", "1")
+    config = open(os.path.join(out, "configs", "swarmpath-cmaes-capped-s1.toml")).read()
+    assert "[evaluation]\ncapping = true\n" in config
+    meta = json.loads(open(os.path.join(out, "runs", "swarmpath-cmaes-capped-s1", "meta.json")).read())
+    assert meta["capping"]["capped_runs"] > 0, meta  # capping stopped runs on this problem
+    # capping keeps the finalists, so the reported best is the same params
+    picks = [sp.Params.load(os.path.join(out, "runs", f"{t}-s1", "pick.toml")).to_dict()
+             for t in ("swarmpath-cmaes", "swarmpath-cmaes-capped")]
+    assert picks[0] == picks[1]
+    assert "3 picks x 3 fresh runs" in compare("finals", "--out", out, "--final-seeds", "3", "--threads", "1")
+    first = json.loads(open(os.path.join(out, "finals.json")).read())
+    # the same cases again: every pick's runs are reused, with the same results
+    assert "0 picks x 3 fresh runs" in compare("finals", "--out", out, "--final-seeds", "3", "--threads", "1")
+    again = json.loads(open(os.path.join(out, "finals.json")).read())
+    assert again["picks"] == first["picks"] and again["evaluated"] == []
+    # other cases (more final seeds): every pick runs again
+    assert "3 picks x 4 fresh runs" in compare("finals", "--out", out, "--final-seeds", "4", "--threads", "1")
