@@ -38,8 +38,6 @@ const std::array kAdditions{
   Addition{"trail_nestward", "falling back from the spot, the trail starts nestward", "§2.3 #5", kBoth, {{{"trail_nestward", 0}}}, {"backoff_far_spot", "T_trap"}},
   // aligning and the chain's links
   Addition{"align_keep_view", "an aligning robot keeps both references in view", "§2.4, #10, #13", kBoth, {{{"align_keep_view", 0}}}, {}},
-  Addition{"align_taper", "the alignment tapers onto P, avoiding only when touching", "§2.4", kBoth, {{{"align_taper", 0}}}, {}},
-  Addition{"r_keep_pull", "a robot beyond R_keep of a reference drives back to it", "§2.4", kBoth, {{{"r_keep_pull", 0}}}, {}},
   Addition{"seek_hidden_reference", "a reference out of view is looked for where it was", "§2.3 #11, #13", kBoth, {{{"seek_hidden_reference", 0}}}, {"align_keep_view"}},
   Addition{"relink_recovery", "a SUB_NEST takes a RECOVERY parent's parent", "§2.3 #17", kBoth, {{{"relink_recovery", 0}}}, {}},
   Addition{"chain_repair", "a chain robot whose neighbour's light is gone mends the chain", "§2.3 #18-#20", kBoth, {{{"chain_repair", 0}}}, {}},

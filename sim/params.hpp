@@ -107,9 +107,7 @@ struct Params {
   bool link_outward = false;  ///< rows #5, #6b on its trail: stop if the target is the nearest chain light
   double form_retries = 3;    ///< rows #7, #8b: a robot losing its target goes home, this often
   // aligning (SPEC §2.4, rows #10-#13) and the chain's links
-  bool align_keep_view = true;  ///< rows #10, #13: an aligning robot keeps both references in view
-  bool align_taper = true;      ///< §2.4: speed tapers onto P; avoidance only when something is sensed
-  bool r_keep_pull = true;      ///< §2.4: a robot farther than R_keep from a reference drives back to it
+  bool align_keep_view = true;        ///< rows #10, #13: an aligning robot keeps both references in view
   bool seek_hidden_reference = true;  ///< rows #11, #13: a reference out of view is looked for where it was
   bool relink_recovery = true;  ///< row #17: a SUB_NEST replaces a RECOVERY parent by that robot's parent
   bool chain_repair = true;  ///< rows #18-#20: a chain robot whose neighbour's light is gone mends the chain

@@ -109,8 +109,8 @@ Command look_for(const Percept& in, const Params& p, RobotMemory& mem, Vec2 towa
   return pf_drive(p, mem, p.v_align * p.v_max * v, s);
 }
 
-// SPEC §2.4: drive to the alignment target P; speed v_align v_max, tapering over the last
-// centimetres (P in cm, so |P| cm/s reaches it in about a second) so that the robot stops on P.
+// SPEC §2.4: drive to the alignment target P at v_align v_max with the diffusion vector D, and stop
+// within d_tol of it.
 Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
   PfMemory& m = mem.pf;
   next_align_leg(in, p, m);
@@ -127,19 +127,9 @@ Command align(const Percept& in, const Params& p, RobotMemory& mem, PfState s) {
   const double len = norm(target);
   if (len <= p.d_tol) return pf_stop(s);
   const Avoidance avoid = diffusion(in.proximity, p);
-  Vec2 v = (1.0 / len) * target;
-  // R_keep bounds the robot itself, not only P: pushed past it, go back toward that reference
-  // (not on the way back to where the alignment began: both were in view there)
-  if (p.r_keep_pull && !view_limited(m) && norm(a) > p.r_keep) {
-    v = (1.0 / norm(a)) * a;
-  } else if (p.r_keep_pull && !view_limited(m) && norm(b) > p.r_keep) {
-    v = (1.0 / norm(b)) * b;
-  }
+  const Vec2 v = (1.0 / len) * target;
   // SPEC §2.4 as written: V = v_align v_max P/|P| + D, D the diffusion vector
-  if (!p.align_taper) return pf_drive(p, mem, p.v_align * p.v_max * v + avoid.direction, s);
-  const double speed = std::min(p.v_align * p.v_max, len);
-  if (avoid.collision) v += avoid.direction;  // avoidance at the same (slow) speed as the pull
-  return pf_drive(p, mem, speed * v, s);
+  return pf_drive(p, mem, p.v_align * p.v_max * v + avoid.direction, s);
 }
 
 }  // namespace swarmpath::sim
