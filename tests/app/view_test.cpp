@@ -225,7 +225,7 @@ std::vector<std::string> split(const std::string& line) {
 TEST(View, TableRecordsItsFailedRunsAndOnlyThose) {
   const std::string dir = temp_dir("table");
   const auto r = cli({"table", "--scenarios", source("tests/data/short_chain.toml"), "--robots", "20",
-                      "--seeds", "3", "--ticks", "1600", "--mode", "pf", "--threads", "2", "--csv",
+                      "--seeds", "3", "--ticks", "1420", "--mode", "pf", "--threads", "2", "--csv",
                       dir + "/runs.csv", "--record-failures", dir + "/failed"});
   ASSERT_EQ(r.code, 0) << r.err;
   // each run that did not form its path (runs.csv says which) has its recording, with its state hash
@@ -247,7 +247,7 @@ TEST(View, TableRecordsItsFailedRunsAndOnlyThose) {
     EXPECT_FALSE(rec.success);
     EXPECT_EQ(sim::to_hex(rec.state_hash), cells.at(col("state_hash")));
   }
-  EXPECT_GE(failed, 1) << "1600 ticks leave some of the three runs without a path";
+  EXPECT_GE(failed, 1) << "1420 ticks leave some of the three runs without a path";
   EXPECT_LE(failed, 2) << "... and some with one";
   std::size_t files = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir + "/failed")) ++files;
