@@ -253,10 +253,22 @@ int run_evolve(const EvolveOptions& o, const evolve::EvaluatorFactory& evaluator
         << " %), base params " << num(r.base.arenas.fitness) << " (success "
         << fixed(100.0 * r.base.arenas.success_rate, 0) << " %)\n";
   }
-  out << "\nbest (validation-set fitness " << num(best.reevaluated.fitness) << " vs base "
-      << num(r.base.reevaluated.fitness) << "):\n";
+  if (r.selection.on) {
+    const evolve::BaseSelection& s = r.selection;
+    out << "\nkeep_base: base minus best finalist " << num(s.mean_difference) << " +- "
+        << num(s.sd_difference) << " (sd) over " << s.pairs
+        << " paired runs, one-sided p = " << num(s.p_value) << (s.base_kept ? " >= " : " < ")
+        << num(s.threshold) << " (level " << num(s.level) << " / " << s.finalists << " finalists)\n";
+  }
+  if (r.selection.base_kept) {
+    out << "\npick: the base params, kept (validation-set fitness " << num(r.base.reevaluated.fitness)
+        << "; best finalist " << num(best.reevaluated.fitness) << ")\n";
+  } else {
+    out << "\nbest (validation-set fitness " << num(best.reevaluated.fitness) << " vs base "
+        << num(r.base.reevaluated.fitness) << "):\n";
+  }
   for (const evolve::Gene& g : c.genome.genes) {
-    out << "  " << g.info->name << " = " << sim::format_value(best.params, *g.info) << "   (base "
+    out << "  " << g.info->name << " = " << sim::format_value(r.pick(), *g.info) << "   (base "
         << sim::format_value(c.genome.base, *g.info) << ")\n";
   }
   out << "wrote " << dir << "/{best.toml, log.csv, fitness.svg, run.json, checkpoint.json}\n";

@@ -253,7 +253,8 @@ Runner add_irace(CLI::App& app) {
   app.add_option(
       "--max-experiments", o->max_experiments,
       "irace's budget in simulations (default: what the config's own run spends to choose its best: "
-      "its candidates x runs each, plus the finalists' re-evaluation)");
+      "its candidates x runs each, plus the finalists' and, with keep_base, the base params' "
+      "re-evaluation)");
   app.add_option("--threads", o->threads, "irace's parallel: simulations at once (default: all cores)");
   app.add_option("--seed", o->seed, "irace's seed (default: the config's master seed)");
 

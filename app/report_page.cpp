@@ -365,11 +365,18 @@ std::string report_page(const ReportInputs& in, const std::vector<PageRecording>
   if (!in.pareto && r.contains("best") && r["best"].is_object()) {
     const Json reev = r["best"].value("reevaluated", Json());
     const Json base = r.value("base_reevaluated", Json());
-    o << " The reported genome (generation " << r["best"].value("generation", 0) << ") scores "
-      << num(number(reev, "fitness"), 4) << " on fresh seeds (success "
-      << num(100.0 * number(reev, "success_rate"), 0) << " %) against the base's "
-      << num(number(base, "fitness"), 4) << " (success " << num(100.0 * number(base, "success_rate"), 0)
-      << " %); lower is better.";
+    if (r["best"].value("base", false))
+      o << " No finalist beat the base params on fresh seeds, so the reported genome is the base params: "
+           "they "
+           "score "
+        << num(number(reev, "fitness"), 4) << " on fresh seeds (success "
+        << num(100.0 * number(reev, "success_rate"), 0) << " %); lower is better.";
+    else
+      o << " The reported genome (generation " << r["best"].value("generation", 0) << ") scores "
+        << num(number(reev, "fitness"), 4) << " on fresh seeds (success "
+        << num(100.0 * number(reev, "success_rate"), 0) << " %) against the base's "
+        << num(number(base, "fitness"), 4) << " (success " << num(100.0 * number(base, "success_rate"), 0)
+        << " %); lower is better.";
   }
   o << "</p>\n<nav><a href=\"#progress\">progress</a> <a href=\"#parameters\">parameters</a> <a "
        "href=\"#comparison\">against the base</a>"

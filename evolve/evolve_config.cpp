@@ -401,6 +401,7 @@ void read_budget(EvolveConfig& c, const TableReader& root) {
 void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string& base_dir) {
   Reevaluation& r = c.reevaluate;
   r.every_generation = !c.evaluation.families.empty();  // the default: log generalisation when arenas vary
+  r.keep_base = !c.multi_objective();                   // the default: the pick is no worse than the start
   const std::optional<TableReader> t = root.table("reevaluate");
   if (!t) return;
   if (c.multi_objective() && t->has("top_k")) {
@@ -416,6 +417,15 @@ void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string
   }
   r.race_level = number_in(*t, "race_level", r.race_level, 1e-6, 0.5);
   r.race_first_test = int_in(*t, "race_first_test", r.race_first_test, 2, 100000);
+  r.keep_base = t->boolean_or("keep_base", r.keep_base);
+  if (r.keep_base && c.multi_objective()) {
+    t->fail("keep_base",
+            "a multi-objective run reports its whole front, the base params beside it: remove keep_base");
+  }
+  if (!r.keep_base && t->has("keep_base_level")) {
+    t->fail("keep_base_level", "applies only with keep_base = true: remove it or set keep_base = true");
+  }
+  r.keep_base_level = number_in(*t, "keep_base_level", r.keep_base_level, 1e-6, 0.5);
   if (t->has("held_out")) {
     r.held_out = scenario_list(*t, "held_out", base_dir);
   } else {
@@ -606,6 +616,11 @@ nlohmann::ordered_json config_json(const EvolveConfig& c) {
     j["reevaluate"]["race_level"] = c.reevaluate.race_level;
     j["reevaluate"]["race_first_test"] = c.reevaluate.race_first_test;
   }
+  // keeping the base params is the default of single-objective runs: their hash names it only when
+  // it is off or at another level, so configs that leave it alone keep their hash
+  if (!c.multi_objective() && !c.reevaluate.keep_base) j["reevaluate"]["keep_base"] = false;
+  if (c.reevaluate.keep_base && c.reevaluate.keep_base_level != Reevaluation{}.keep_base_level)
+    j["reevaluate"]["keep_base_level"] = c.reevaluate.keep_base_level;
   if (c.multi_objective()) {
     nlohmann::ordered_json use = nlohmann::ordered_json::array();
     for (const ObjectiveKind k : c.multi.objectives) use.push_back(std::string(objective_name(k)));

@@ -70,6 +70,11 @@ struct Reevaluation {
   bool race = false;                  ///< race the finalists block by block (evolve/racing.hpp)
   double race_level = 0.05;           ///< racing: drop a finalist when its paired t-test p < this
   int race_first_test = 2;            ///< racing: blocks run before the first test
+  /// The base params compete with the finalists on the fresh cases: the pick is the base params
+  /// unless the best finalist beats them by a one-sided paired t-test (evolve/base_selection.hpp).
+  /// Single-objective runs only (a multi-objective run reports its whole front).
+  bool keep_base = true;
+  double keep_base_level = 0.05;  ///< the family-wise level of that test (split over the finalists)
 };
 
 struct EvolveConfig {

@@ -99,19 +99,44 @@ void write_fitness_svg(std::ostream& out, const std::string& title,
   write_line_chart(out, title, "fitness per generation (lower is better)", "fitness", series);
 }
 
+namespace {
+
+// keep_base's test in one sentence of the header
+void selection_line(std::ostream& h, const BaseSelection& s) {
+  h << "# Paired test on the same fresh runs (keep_base): base minus finalist "
+    << short_text(s.mean_difference) << " +- " << short_text(s.sd_difference) << " (sd) over " << s.pairs
+    << " runs, one-sided p = " << short_text(s.p_value) << (s.base_kept ? " >= " : " < ")
+    << short_text(s.threshold) << " (level " << short_text(s.level) << " / " << s.finalists
+    << " finalists).\n";
+}
+
+}  // namespace
+
 std::string best_toml(const EvolveConfig& c, const RunResult& r) {
   const Finalist& f = r.finalists.at(r.best);
   const BuildInfo b = build_info();
   std::ostringstream h;
-  h << "# swarmpath evolve: the best candidate of run \"" << c.name << "\" (config " << c.file << ", hash "
-    << config_hash(c) << ", swarmpath " << b.version << ", git " << b.git_commit << ").\n";
-  h << "# Found in generation " << f.elite.generation << " (candidate " << f.elite.candidate
-    << ", generation mean fitness " << short_text(f.elite.stats.fitness) << "); chosen among "
-    << r.finalists.size() << " finalists by its fitness on fresh seeds: " << short_text(f.reevaluated.fitness)
-    << " over " << f.reevaluated.runs << " runs, success rate " << short_text(f.reevaluated.success_rate)
-    << ".\n";
-  h << "# The base params on the same fresh seeds: fitness " << short_text(r.base.reevaluated.fitness)
-    << ", success rate " << short_text(r.base.reevaluated.success_rate) << ".\n";
+  const bool base = r.selection.base_kept;
+  h << "# swarmpath evolve: " << (base ? "the base params kept by" : "the best candidate of") << " run \""
+    << c.name << "\" (config " << c.file << ", hash " << config_hash(c) << ", swarmpath " << b.version
+    << ", git " << b.git_commit << ").\n";
+  if (base) {
+    h << "# No finalist beat the base params on fresh seeds: they score "
+      << short_text(r.base.reevaluated.fitness) << " over " << r.base.reevaluated.runs
+      << " runs (success rate " << short_text(r.base.reevaluated.success_rate) << "), the best of "
+      << r.finalists.size() << " finalists (generation " << f.elite.generation << ", candidate "
+      << f.elite.candidate << ") " << short_text(f.reevaluated.fitness) << " (success rate "
+      << short_text(f.reevaluated.success_rate) << ").\n";
+  } else {
+    h << "# Found in generation " << f.elite.generation << " (candidate " << f.elite.candidate
+      << ", generation mean fitness " << short_text(f.elite.stats.fitness) << "); chosen among "
+      << r.finalists.size()
+      << " finalists by its fitness on fresh seeds: " << short_text(f.reevaluated.fitness) << " over "
+      << f.reevaluated.runs << " runs, success rate " << short_text(f.reevaluated.success_rate) << ".\n";
+    h << "# The base params on the same fresh seeds: fitness " << short_text(r.base.reevaluated.fitness)
+      << ", success rate " << short_text(r.base.reevaluated.success_rate) << ".\n";
+  }
+  if (r.selection.on) selection_line(h, r.selection);
   if (f.arenas.runs > 0) {
     h << "# On the validation arenas alone (drawn from seeds training never uses): fitness "
       << short_text(f.arenas.fitness) << " over " << f.arenas.runs << " runs, success rate "
@@ -127,7 +152,7 @@ std::string best_toml(const EvolveConfig& c, const RunResult& r) {
   h << "; the others as in " << (c.params_written.empty() ? "the paper's defaults" : c.params_written)
     << ".\n\n";
   std::ostringstream out;
-  sim::write_params_toml(out, f.params, h.str());
+  sim::write_params_toml(out, r.pick(), h.str());
   return out.str();
 }
 
@@ -264,11 +289,39 @@ nlohmann::ordered_json run_json(const EvolveConfig& c, const RunResult& r, int t
                    {"simulations", r.race.simulations},
                    {"simulations_without_racing", r.race.without_racing}};
   }
-  j["best"] =
-      r.finalists.empty() ? nlohmann::ordered_json(nullptr) : finalist_json(c, r.finalists[r.best], r.best);
+  if (r.selection.on) {
+    const BaseSelection& s = r.selection;
+    j["selection"] = {{"keep_base", true},
+                      {"base_kept", s.base_kept},
+                      {"finalist", s.finalist},
+                      {"finalists", s.finalists},
+                      {"level", s.level},
+                      {"threshold", s.threshold},
+                      {"pairs", s.pairs},
+                      {"mean_difference", s.mean_difference},
+                      {"sd_difference", s.sd_difference},
+                      {"t", s.t},
+                      {"p_value", s.p_value}};
+  } else {
+    j["selection"] = {{"keep_base", false}, {"base_kept", false}};
+  }
+  if (r.finalists.empty()) {
+    j["best"] = nullptr;
+  } else if (r.selection.base_kept) {
+    // the base params, kept: what they scored, no generation (they were never a candidate)
+    j["best"] = {{"base", true},
+                 {"reevaluated", stats_json(r.base.reevaluated)},
+                 {"held_out",
+                  r.base.held_out.runs > 0 ? stats_json(r.base.held_out) : nlohmann::ordered_json(nullptr)}};
+    if (r.base.arenas.runs > 0) j["best"]["validation_arenas"] = stats_json(r.base.arenas);
+    j["best"]["tuned"] = base_tuned;
+  } else {
+    j["best"] = finalist_json(c, r.finalists[r.best], r.best);
+    j["best"]["base"] = false;
+  }
   if (!r.finalists.empty()) {
-    j["best"]["params"] = params_values_json(r.finalists[r.best].params);
-    j["best"]["controller"] = controller_json(r.finalists[r.best].params);
+    j["best"]["params"] = params_values_json(r.pick());
+    j["best"]["controller"] = controller_json(r.pick());
   }
   return j;
 }

@@ -38,7 +38,8 @@ void write_log_csv(std::ostream& out, const std::vector<GenerationRecord>& histo
 void write_fitness_svg(std::ostream& out, const std::string& title,
                        const std::vector<GenerationRecord>& history);  // with the validation line when logged
 
-/// best.toml: write_params_toml of the best finalist under a comment saying where it came from.
+/// best.toml: write_params_toml of the pick (the best finalist, or the base params kept by keep_base)
+/// under a comment saying where it came from and, with keep_base, the paired test's figures.
 std::string best_toml(const EvolveConfig& c, const RunResult& r);
 
 /// The part of run.json every run has: tool, versions, config and its hash, every seed, threads,

@@ -14,6 +14,7 @@
 #include "evolve/run_folder.hpp"
 #include "evolve/seeds.hpp"
 #include "evolve/stopwatch.hpp"
+#include "evolve/svg_plot.hpp"
 #include "sim/config_error.hpp"
 
 namespace swarmpath::evolve {
@@ -373,7 +374,8 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   }
   std::vector<Decoded> finalists;
   for (const Elite& e : st.elites) finalists.push_back(decode(c.genome, e.x));
-  // the base params run last on the same cases, as a reference (never chosen)
+  // the base params run last on the same cases: the pick unless a finalist beats them (keep_base),
+  // else a reference
   finalists.push_back(Decoded{c.genome.base, false, {}});
   note("re-evaluating " + std::to_string(st.elites.size()) + " finalists and the base params on " +
        std::to_string(result.reevaluation_cases.size()) + " fresh cases each");
@@ -404,6 +406,26 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
     }
   }
   result.best = best.value_or(0);
+  if (c.reevaluate.keep_base && best) {
+    // the best finalist against the base params, run by run on the training cases both ran
+    const auto training_fitness = [&](std::size_t i) {
+      const FinalistRuns& runs = race.finalists[i];
+      std::vector<double> v;
+      for (const RunScore& s : split_held_out(runs.scores, 0, result.settings, runs.cases).first)
+        v.push_back(s.fitness);
+      return v;
+    };
+    result.selection =
+        select_against_base(training_fitness(*best), training_fitness(finalists.size() - 1),
+                            static_cast<int>(result.finalists.size()), c.reevaluate.keep_base_level);
+    result.selection.finalist = *best;
+    note(result.selection.base_kept
+             ? "kept the base params: the best finalist's paired test p = " +
+                   short_text(result.selection.p_value) + " is not below " +
+                   short_text(result.selection.threshold)
+             : "finalist " + std::to_string(*best) + " beat the base params: p = " +
+                   short_text(result.selection.p_value) + " < " + short_text(result.selection.threshold));
+  }
   if (c.reevaluate.race) {
     note("racing: " + std::to_string(result.race.simulations) + " of " +
          std::to_string(result.race.without_racing) + " re-evaluation simulations run");

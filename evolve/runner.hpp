@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "evolve/base_selection.hpp"
 #include "evolve/batch.hpp"
 #include "evolve/checkpoint.hpp"
 #include "evolve/evolve_config.hpp"
@@ -62,13 +63,17 @@ struct RunResult {
   RunState state;
   std::vector<Finalist> finalists;  ///< in elite order
   std::size_t best = 0;             ///< index of the finalist with the lowest re-evaluated fitness
-  Finalist base;                    ///< the base params on the same fresh cases, for reference only
+  Finalist base;                    ///< the base params on the same fresh cases
+  BaseSelection selection;          ///< keep_base: the best finalist tested against the base params
   std::string stop_reason;
   double seconds = 0.0;                      ///< recorded wall time (0 without wall time)
   std::vector<EvalSetting> settings;         ///< the objective's settings
   std::vector<EvalCase> cases;               ///< the cases of generation 0 (later ones differ in seed only)
   std::vector<EvalCase> reevaluation_cases;  ///< the finalists' cases
   RaceSummary race;                          ///< the re-evaluation's simulations (racing or not)
+
+  /// The pick (best.toml): the base params when keep_base kept them, else the best finalist.
+  const sim::Params& pick() const { return selection.base_kept ? base.params : finalists.at(best).params; }
 };
 
 /// The budget in force: the config's, or `generations` generations when given.

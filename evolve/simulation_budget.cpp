@@ -24,7 +24,9 @@ std::optional<SimulationBudget> simulation_budget(const EvolveConfig& c) {
   const std::size_t robot_counts = c.evaluation.robots.empty() ? 1 : c.evaluation.robots.size();
   const auto settings = static_cast<std::int64_t>(c.evaluation.scenarios.size() * robot_counts);
   b.cases_per_candidate = settings * c.evaluation.seeds;
-  b.reevaluation = c.multi_objective() ? 0 : std::int64_t{c.reevaluate.top_k} * c.reevaluate.seeds * settings;
+  // keep_base: the base params' runs choose too, so they count
+  const std::int64_t chosen_from = std::int64_t{c.reevaluate.top_k} + (c.reevaluate.keep_base ? 1 : 0);
+  b.reevaluation = c.multi_objective() ? 0 : chosen_from * c.reevaluate.seeds * settings;
   b.total = b.candidates * b.cases_per_candidate + b.reevaluation;
   return b;
 }

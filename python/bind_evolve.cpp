@@ -232,7 +232,8 @@ void bind_evolve(py::module_& m) {
             return d;
           },
           "The simulations the config's own run spends to choose its best (candidates x cases each + the "
-          "finalists' re-evaluation): what an outside tuner should get for a fair comparison. None for a "
+          "finalists' and, with keep_base, the base params' re-evaluation): what an outside tuner should get "
+          "for a fair comparison. None for a "
           "wall-time budget.")
       .def("decode", &decode_values, py::arg("values"),
            "A Candidate from tuned values: a dict {name: value} (names not given keep the base value) or a "

@@ -16,6 +16,8 @@ base params as its starting point:
   swarmpath-<optimiser>  `swarmpath evolve` with the config (optimiser replaced, population kept),
                           master seed = tuner seed; the pick is its best.toml.
   swarmpath-cmaes-capped  the same with `[evaluation] capping = true` (docs/racing.md).
+  swarmpath-cmaes-finalist  the same with `[reevaluate] keep_base = false` and one more finalist: the
+                          best finalist is the pick even when it is no better than the base params.
   irace                   `swarmpath irace` scenario, irace's seed = tuner seed, maxExperiments =
                           the budget; the pick is irace's best (elite 1), `swarmpath irace import`.
   optuna-<sampler>        examples/optuna_tune.py's study: budget / runs-per-trial trials, every
@@ -45,11 +47,16 @@ sys.path.insert(0, str(ROOT / "examples"))
 sys.path.append(str(ROOT / "build" / "release" / "python"))  # the module, unless PYTHONPATH has one
 
 # swarmpath's optimisers with switches of the problem config turned on: name -> (optimiser, {section: lines
-# added under it}); the problem itself (params, settings, fitness, budget) stays as it is
+# set in it (a key already there is replaced)}); the problem itself (params, settings, fitness, budget)
+# stays as it is
 VARIANTS = {
     # adaptive capping (docs/racing.md): a generation's runs first go to half of T_max; the candidates
     # that cannot reach the top are stopped there, so the same finalists for fewer simulated ticks
     "swarmpath-cmaes-capped": ("cmaes", {"evaluation": ["capping = true"]}),
+    # the pick as before keep_base (docs/tuners.md): always the best finalist by its fresh-seed mean; the
+    # base params' fresh runs then choose nothing, so a third finalist takes their share of the budget
+    "swarmpath-cmaes-finalist": ("cmaes", {"reevaluate": ["keep_base = false", lambda body: "top_k = {}".format(
+        int((re.search(r"(?m)^top_k = (\d+)", body) or [0, 3])[1]) + 1)]}),
 }
 TUNERS = ["swarmpath-cmaes", "swarmpath-ga", "swarmpath-random", *VARIANTS, "irace", "optuna-tpe", "optuna-cmaes"]
 FINAL_SEED_BASE = 7_000_000_000  # final seeds 7e9 + k: no tuner draws these (evolve mixes 64-bit seeds,
@@ -81,8 +88,18 @@ def config_copy(problem, tuner, seed, out):
     if tuner.startswith("swarmpath-"):
         optimiser, added = VARIANTS.get(tuner, (tuner[len("swarmpath-"):], {}))
         for section, lines in added.items():
-            text, n = re.subn(rf"(?m)^\[{section}\]$", lambda m: m.group(0) + "\n" + "\n".join(lines), text)
-            assert n == 1, f"the problem config needs one [{section}] section"
+            head = re.search(rf"(?m)^\[{section}\]$", text)
+            assert head, f"the problem config needs one [{section}] section"
+            end = re.compile(r"(?m)^\[").search(text, head.end())
+            end = end.start() if end else len(text)
+            body = text[head.end():end]
+            for line in lines:
+                line = line(body) if callable(line) else line
+                key = line.split("=")[0].strip()
+                body, n = re.subn(rf"(?m)^{key} = .*$", line, body)
+                if n == 0:
+                    body = "\n" + line + body
+            text = text[:head.end()] + body + text[end:]
         if optimiser != "cmaes":
             # the same candidates per generation as CMA-ES, so the same generations fit the budget
             import swarmpath
@@ -106,10 +123,14 @@ def run_swarmpath(config, tuner, seed, d, threads):
             stderr=subprocess.STDOUT)
     shutil.copy(d / "evolve" / "best.toml", d / "pick.toml")
     run = json.loads((d / "evolve" / "run.json").read_text())
-    # the generations' runs and the finalists' on the fresh training cases (the base params' reference
-    # runs on them choose nothing and are left out, as for the other tuners)
+    # the generations' runs and the finalists' on the fresh training cases, and the base params' there
+    # when they may be the pick (keep_base; without it their reference runs choose nothing and are left
+    # out, as for the other tuners)
     fresh = sum(1 for k in run["seeds"]["reevaluation"] if not k["held_out"])
-    meta = {"simulations": run["runs"] + len(run["finalists"]) * fresh, "generations": run["generations"]}
+    selection = run.get("selection", {"keep_base": False, "base_kept": False})
+    chosen_from = len(run["finalists"]) + (1 if selection["keep_base"] else 0)
+    meta = {"simulations": run["runs"] + chosen_from * fresh, "generations": run["generations"],
+            "selection": selection}
     if "capping" in run:  # runs stopped at the cap count as runs, runs started again count twice
         meta["capping"] = run["capping"]
     return meta
@@ -311,6 +332,9 @@ def cmd_report(a):
         lines.append(f"| {t} | {len(r['fitness'])} | {m:.3f} +- {h:.3f} | {dm:+.3f} +- {dh:.3f} | {100 * sm:.0f} % | "
                      f"{diff} | {wm:.0f} s | {cm:.0f} s | {sum(r['sims']) / len(r['sims']):.0f} |")
     nruns = len(base["runs"])
+    kept = {t: sum(1 for name in finals["picks"] if name.rsplit("-s", 1)[0] == t and
+                   json.loads((out / "runs" / name / "meta.json").read_text()).get("selection", {}).get("base_kept"))
+            for t in rows}
     lines.append(f"| base params (untuned) | - | {base['fitness']:.3f} | 0 | {100 * base['success_rate']:.0f} % | - | - | - "
                  "| - |")
     table = "\n".join(lines) + "\n"
@@ -320,6 +344,9 @@ def cmd_report(a):
             "final fitness with a Welch 95 % interval (negative: the first is better). Wall time: the tuning run "
             "start to end; CPU time: its process and everything it waited for (R, target runners, simulation "
             "threads), which other work on the machine disturbs less.\n")
+    kept_note = "; ".join(f"{t} {k} of {len(rows[t]['fitness'])}" for t, k in kept.items() if k)
+    if kept_note:
+        note += f"\nPicks that are the base params (keep_base: no finalist beat them on the fresh runs): {kept_note}.\n"
     print(table + note)
     docs = pathlib.Path(a.docs or ".")
     (out / "table.md").write_text(table + note)

@@ -79,7 +79,15 @@ TEST(CliEvolve, EvolveWritesItsFilesAndResumes) {
   }
   // best.toml is a params file usable everywhere
   const std::string best = (std::filesystem::path(out) / "best.toml").string();
-  EXPECT_EQ(read_text(best).rfind("# swarmpath evolve: the best candidate", 0), 0u);
+  // its header says whether the base params were kept (keep_base, the default) and the test's figures
+  const nlohmann::json first = nlohmann::json::parse(read_text(std::filesystem::path(out) / "run.json"));
+  const bool kept = first.at("selection").at("base_kept").get<bool>();
+  EXPECT_EQ(read_text(best).rfind(kept ? "# swarmpath evolve: the base params kept by run"
+                                       : "# swarmpath evolve: the best candidate of run",
+                                  0),
+            0u);
+  EXPECT_NE(read_text(best).find("one-sided p = "), std::string::npos);
+  EXPECT_NE(r.out.find("keep_base: base minus best finalist"), std::string::npos) << r.out;
   (void)sim::load_params(best);
   r = cli({"simulate", "--scenario", source("tests/data/short_chain.toml"), "--params", best, "--mode", "pf",
            "--robots", "8", "--ticks", "500"});

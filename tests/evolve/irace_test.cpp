@@ -29,8 +29,11 @@ TEST(SimulationBudget, CandidatesTimesCasesPlusTheFinalists) {
   EXPECT_EQ(b->population, 6);
   EXPECT_EQ(b->candidates, 8 * 6);
   EXPECT_EQ(b->cases_per_candidate, 2);  // 1 scenario x 1 robot count x 2 seeds
-  EXPECT_EQ(b->reevaluation, 2 * 3);     // top_k 2 x 3 fresh seeds
+  EXPECT_EQ(b->reevaluation, 2 * 3);     // (top_k 1 + the base params, keep_base) x 3 fresh seeds
   EXPECT_EQ(b->total, 102);
+  EvolveConfig without_base = c;  // without keep_base the base params' runs choose nothing: not counted
+  without_base.reevaluate.keep_base = false;
+  EXPECT_EQ(simulation_budget(without_base)->reevaluation, 1 * 3);
   EvolveConfig e = c;
   e.budget.evaluations = 20;  // stops after the generation that reaches 20: 4 x 6
   EXPECT_EQ(simulation_budget(e)->candidates, 24);

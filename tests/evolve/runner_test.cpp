@@ -53,7 +53,7 @@ TEST(Runner, BitIdenticalAtOneAndTwoThreads) {
   EXPECT_EQ(std::count(log.begin(), log.end(), '\n'), 3);  // header + 2 generations
   EXPECT_EQ(log.rfind("generation,best,mean,std,", 0), 0u);
   const sim::Params best = sim::load_params((one / "best.toml").string());
-  EXPECT_EQ(sim::get_value(best, *sim::find_param("w_away")), r1.finalists[r1.best].params.w_away);
+  EXPECT_EQ(sim::get_value(best, *sim::find_param("w_away")), r1.pick().w_away);
   EXPECT_EQ(read_text(one / "fitness.svg").rfind("<svg", 0), 0u);
   const nlohmann::json j = nlohmann::json::parse(read_text(one / "run.json"));
   EXPECT_FALSE(j.at("versions").at("git_commit").get<std::string>().empty());

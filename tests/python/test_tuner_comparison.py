@@ -60,3 +60,21 @@ def test_capped_variant_keeps_the_pick_and_finals_reuse_earlier_runs(sp, tmp_pat
     assert again["picks"] == first["picks"] and again["evaluated"] == []
     # other cases (more final seeds): every pick runs again
     assert "3 picks x 4 fresh runs" in compare("finals", "--out", out, "--final-seeds", "4", "--threads", "1")
+
+
+def test_keep_base_counts_the_base_params_and_the_finalist_variant_spends_the_same(sp, tmp_path):
+    out = str(tmp_path / "tuners")
+    compare("run", "--out", out, "--tuners", "swarmpath-cmaes,swarmpath-cmaes-finalist", "--seeds", "1",
+            "--threads", "1")
+    config = open(os.path.join(out, "configs", "swarmpath-cmaes-finalist-s1.toml")).read()
+    assert "[reevaluate]\nkeep_base = false\ntop_k = 2\n" in config  # one finalist more than tiny_tune's 1
+    budget = sp.EvolveConfig.load(TINY_TUNE).simulation_budget()["total"]
+    metas = {t: json.loads(open(os.path.join(out, "runs", f"{t}-s1", "meta.json")).read())
+             for t in ("swarmpath-cmaes", "swarmpath-cmaes-finalist")}
+    # keep_base: 1 finalist + the base params on the fresh seeds; the variant: 2 finalists
+    assert metas["swarmpath-cmaes"]["simulations"] == budget == metas["swarmpath-cmaes-finalist"]["simulations"]
+    selection = metas["swarmpath-cmaes"]["selection"]
+    assert selection["keep_base"] and not metas["swarmpath-cmaes-finalist"]["selection"]["keep_base"]
+    pick = sp.Params.load(os.path.join(out, "runs", "swarmpath-cmaes-s1", "pick.toml")).to_dict()
+    base = sp.EvolveConfig.load(TINY_TUNE).base.to_dict()
+    assert (pick == base) == selection["base_kept"]

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: MIT
+// Keeping the base params ([reevaluate] keep_base, the default of single-objective runs): the base
+// params run the finalists' fresh cases (common random numbers), and the pick is the base params
+// unless the best finalist (lowest mean there) beats them by a one-sided paired t-test on those
+// runs. The best of k finalists is chosen on the same runs it is tested on, so the test runs at
+// keep_base_level / k (Bonferroni): when no finalist is better than the base params, the chance
+// that one replaces them is at most keep_base_level. A tuner whose best candidates are chosen
+// partly by luck then returns its start rather than something worse than it.
+#pragma once
+
+#include <cstddef>
+#include <span>
+
+namespace swarmpath::evolve {
+
+/// The test of the best finalist against the base params, and its outcome.
+struct BaseSelection {
+  bool on = false;               ///< keep_base was in force
+  bool base_kept = false;        ///< the pick is the base params
+  std::size_t finalist = 0;      ///< the finalist tested: the best by its fresh-case mean
+  int finalists = 0;             ///< the finalists it was chosen from (k)
+  double level = 0.0;            ///< keep_base_level
+  double threshold = 0.0;        ///< level / k: a p-value below it replaces the base params
+  int pairs = 0;                 ///< paired runs (the training cases both ran)
+  double mean_difference = 0.0;  ///< base minus finalist, mean over the pairs (> 0: the finalist is better)
+  double sd_difference = 0.0;    ///< its standard deviation (n - 1)
+  double t = 0.0;                ///< mean / (sd / sqrt(n)); 0 when sd is 0
+  double p_value = 1.0;          ///< one-sided: the finalist is better (1 with fewer than 2 pairs)
+};
+
+/// Tests `finalist`'s fresh-case fitness against `base`'s, case by case (equal lengths, the same
+/// cases in the same order); `finalists` = k, `level` = keep_base_level.
+BaseSelection select_against_base(std::span<const double> finalist, std::span<const double> base,
+                                  int finalists, double level);
+
+}  // namespace swarmpath::evolve
