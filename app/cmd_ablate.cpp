@@ -63,7 +63,8 @@ void list_additions(std::ostream& out) {
   out << "The additions beyond SPEC (name: what it does; SPEC rule; runs it acts in; off; needs):\n";
   for (const sim::Addition& a : sim::additions()) {
     out << "  " << a.name << ": " << a.title << "; " << a.rule << "; "
-        << (a.scope == sim::AdditionScope::kBoth ? "pf and ta" : "ta only") << "; off:";
+        << (a.scope == sim::AdditionScope::kBoth ? "pf and ta" : "ta only")
+        << (sim::in_default(a) ? "" : "; off in the default (under trial)") << "; off:";
     for (const sim::Setting& s : a.off) {
       if (!s.key.empty()) out << " " << s.key << " = " << s.value;
     }
@@ -241,6 +242,8 @@ int run_ablate(const AblateOptions& o, const evolve::EvaluatorFactory& evaluator
       } else {
         sim::switch_on(c.params, *a);
       }
+      // an addition the base already has as the arm would set it (one off in the default): no row
+      if (sim::is_on(c.params, *a) == sim::is_on(base.params, *a)) continue;
       if (a->scope == sim::AdditionScope::kTaskAllocation) {
         c.modes.clear();
         if (std::find(modes.begin(), modes.end(), sim::Mode::kTaskAllocation) != modes.end())

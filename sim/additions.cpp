@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "additions.hpp"
 
+#include <algorithm>
 #include <array>
 
 namespace swarmpath::sim {
@@ -36,6 +37,7 @@ const std::array kAdditions{
   Addition{"spot_patience", "patience on the way to the spot without a wall in the way", "§2.3 #5", kBoth, {{{"spot_patience", 0}}}, {"backoff_far_spot", "T_trap"}},
   Addition{"spot_crumb_tol", "the spot is a crumb of the robot's own way out", "§2.3 #5", kBoth, {{{"spot_crumb_tol", 0}}}, {"backoff_far_spot"}},
   Addition{"trail_nestward", "falling back from the spot, the trail starts nestward", "§2.3 #5", kBoth, {{{"trail_nestward", 0}}}, {"backoff_far_spot", "T_trap"}},
+  Addition{"spot_on_way", "the spot is where the robot's own way out first came that near", "§2.3 #5, #6b", kBoth, {{{"spot_on_way", 0}}}, {"backoff_far_spot"}},
   // aligning and the chain's links
   Addition{"align_keep_view", "an aligning robot keeps both references in view", "§2.4, #10, #13", kBoth, {{{"align_keep_view", 0}}}, {}},
   Addition{"seek_hidden_reference", "a reference out of view is looked for where it was", "§2.3 #11, #13", kBoth, {{{"seek_hidden_reference", 0}}}, {"align_keep_view"}},
@@ -61,6 +63,10 @@ const std::array kAdditions{
   Addition{"refound_starved", "a chain's end fetches more robots (a second allocation)", "§2.6 T11, T12", kTa, {{{"refound_starved", 0}}}, {"recruit_call"}},
 };
 
+// additions under trial: registered so that the ablation can measure them, off in the default
+// (docs/detours.md)
+constexpr std::array<std::string_view, 1> kOffInDefault{"spot_on_way"};
+
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
 constexpr std::array kSpecDefaults{
   Setting{"v_max", 10},            // row 7 [A]
@@ -80,6 +86,10 @@ void set(Params& p, const Setting& s) {
 
 std::span<const Addition> additions() { return kAdditions; }
 
+bool in_default(const Addition& a) {
+  return std::find(kOffInDefault.begin(), kOffInDefault.end(), a.name) == kOffInDefault.end();
+}
+
 const Addition* find_addition(std::string_view name) {
   for (const Addition& a : kAdditions) {
     if (a.name == name) return &a;
@@ -97,7 +107,8 @@ void switch_on(Params& p, const Addition& a) {
   const Params defaults;
   for (const Setting& s : a.off) {
     const ParamInfo* info = s.key.empty() ? nullptr : find_param(s.key);
-    if (info != nullptr) set_value(p, *info, get_value(defaults, *info));
+    // under trial (off in the default): the key's upper bound, true for a switch
+    if (info != nullptr) set_value(p, *info, in_default(a) ? get_value(defaults, *info) : info->hi);
   }
   for (const std::string_view need : a.needs) {
     const Addition* other = need.empty() ? nullptr : find_addition(need);

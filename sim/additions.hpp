@@ -36,6 +36,11 @@ struct Addition {
 /// task allocation).
 std::span<const Addition> additions();
 
+/// Whether `a` is on in the default controller (Params{}, genomes/default.toml); false for an
+/// addition under trial, registered so that the ablation can measure it (run with --params that
+/// switch it on).
+bool in_default(const Addition& a);
+
 /// The addition called `name`, or nullptr.
 const Addition* find_addition(std::string_view name);
 
@@ -43,7 +48,7 @@ const Addition* find_addition(std::string_view name);
 void switch_off(Params& p, const Addition& a);
 
 /// Switches `a` on in `p`, and the additions it needs, recursively: their keys take the code's
-/// defaults (Params{}).
+/// defaults (Params{}); an addition under trial (not in_default) takes its key's upper bound.
 void switch_on(Params& p, const Addition& a);
 
 /// Whether `a` is on in `p`: some key of it differs from its off value.

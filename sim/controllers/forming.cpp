@@ -15,6 +15,11 @@ namespace {
 
 bool nestward_of_target(const PfContext& c, Vec2 at) {
   if (!c.p.subgoal_nestward) return true;  // SPEC's rows #5, #6b: anywhere d_sub from the target
+  // R (spot_on_way): at its spot on the way it came, nearer the nest along that way
+  constexpr double kWaySpotReach = 0.25;  // [m] one crumb's spacing
+  if (c.p.spot_on_way && c.m.has_way_spot && c.m.way_spot_for == c.m.target.id &&
+      dist(at, c.m.way_spot) <= kWaySpotReach)
+    return true;
   // R (link_outward): on its own way from the nest, wherever the new link extends the chain
   if (c.p.link_outward && c.on_trail && c.m.target.visible) {
     const Blob* t = blob_of(c.in, c.m.target.id);
@@ -79,6 +84,7 @@ void take_target(const PfContext& c, PfMemory& m) {
   m.form_leg = FormLeg::kBackOff;  // found within d_detect
   // found the goal from its far side: its own way from the nest leads round the goal (R)
   m.far_side = goal && dist(c.in.pose.p, c.nest) > dist(m.target.last_seen, c.nest);
+  m.way_spot_for = kNobody;
   m.parent = Tracked{};
   m.child = Tracked{};
 }
@@ -88,6 +94,7 @@ void retarget(const PfContext& c, PfMemory& m) {
   // within d_detect of it: back off from it at once; else walk to it first
   m.form_leg = c.sight.red_nearer_nest->distance_cm <= c.p.d_detect ? FormLeg::kBackOff : FormLeg::kToTarget;
   m.far_side = false;  // the tip is reached from the chain's side; its way home is the trail
+  m.way_spot_for = kNobody;
 }
 
 void target_becomes_parent(const PfContext&, PfMemory& m) { m.parent = m.target; }
@@ -143,11 +150,19 @@ Command to_view_edge(const Percept& in, const Params& p, RobotMemory& mem) {
 // along its own way from the nest [R trail_nestward: from the point of that way nearest it that is
 // nearer the nest than the target, not back past the target]
 Command to_spot(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
-  const Vec2 tgt = mem.pf.target.last_seen;
-  const Vec2 spot_at = backoff_spot_at(p, mem, tgt);
+  PfMemory& m = mem.pf;
+  const Vec2 tgt = m.target.last_seen;
+  // R (spot_on_way): where its way from the nest first came that near the target, chosen once per
+  // target (the trail home consumes crumbs); falling back, it retraces that way from the crumb nearest it
+  if (p.spot_on_way && m.way_spot_for != m.target.id) {
+    m.way_spot_for = m.target.id;
+    m.has_way_spot = mem.trail.first_within(tgt, (p.d_sub + 5.0) * kCm, m.way_spot);
+  }
+  const bool on_way = p.spot_on_way && m.has_way_spot;
+  const Vec2 spot_at = on_way ? m.way_spot : backoff_spot_at(p, mem, tgt);
   const bool wall = wall_in_the_way(in, in.pose.to_local(spot_at - in.pose.p));
   const double patience = p.spot_patience > 0.0 && !wall ? p.spot_patience : 0.25 * p.t_trap;
-  const double trail_within = p.trail_nestward ? dist(tgt, mem.nest) : Trail::kEverywhere;
+  const double trail_within = p.trail_nestward && !on_way ? dist(tgt, mem.nest) : Trail::kEverywhere;
   const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest, patience, &spot_at, trail_within);
   const Vec2 v = with_avoidance(in, p, mem.nav, f) + sight.repulsion;
   return pf_drive(p, mem, p.v_max * v, PfState::kSubgoalForming);
@@ -190,6 +205,7 @@ void pf_join_chain_end(PfMemory& m, const Params& p, const Blob& red, const Pose
   const bool reached = red.distance_cm <= p.d_detect || dist(pose.p, nest) < dist(m.target.last_seen, nest);
   m.form_leg = reached ? FormLeg::kBackOff : FormLeg::kToTarget;
   m.far_side = false;
+  m.way_spot_for = kNobody;
   m.parent = Tracked{};
   m.child = Tracked{};
   m.last_saw_target = pose.p;

@@ -114,10 +114,13 @@ struct PfMemory {
   int answering = -1;  ///< recruit_call: the calling subgoal this robot goes to (claimed on the medium)
   // forming (rows #5-#8)
   FormLeg form_leg = FormLeg::kBackOff;
-  Tracked target;         ///< what the robot backs off from while forming
-  bool far_side = false;  ///< found the goal from its far side (farther from the nest than it)
-  Vec2 last_saw_target;   ///< the robot's position when it last saw the target [m]
-  int form_retries = 0;   ///< form_retries: how often it has lost its target and gone home (row #7h)
+  Tracked target;              ///< what the robot backs off from while forming
+  bool far_side = false;       ///< found the goal from its far side (farther from the nest than it)
+  Vec2 last_saw_target;        ///< the robot's position when it last saw the target [m]
+  int form_retries = 0;        ///< form_retries: how often it has lost its target and gone home (row #7h)
+  int way_spot_for = kNobody;  ///< spot_on_way: the target whose spot `way_spot` is (none: not chosen)
+  bool has_way_spot = false;   ///< spot_on_way: its way from the nest came within the spot's distance
+  Vec2 way_spot;               ///< spot_on_way: where it did [m]
   // in the chain (rows #9-#17)
   Tracked parent;  ///< goal-side reference (the goal beacon or a robot)
   Tracked child;   ///< nest-side reference (the nest beacon or a robot)

@@ -134,6 +134,27 @@ bool Trail::crumb_at(Vec2 from, double r, double tol, Vec2 nest, double within, 
   return found;
 }
 
+bool Trail::first_within(Vec2 from, double r, Vec2& out) const {
+  if (count_ == 0 || dist(crumbs_[0], from) <= r) return false;
+  for (int i = 1; i < count_; ++i) {
+    const Vec2 a = crumbs_[static_cast<std::size_t>(i - 1)];
+    const Vec2 b = crumbs_[static_cast<std::size_t>(i)];
+    if (dist(b, from) > r) continue;
+    // a is farther than r, b within: the circle of radius r round `from` crosses the leg a-b at
+    // a + t (b - a), the smaller root of |a - from + t (b - a)|^2 = r^2 in [0, 1]
+    const Vec2 ab = b - a;
+    const Vec2 fa = a - from;
+    const double qa = dot(ab, ab);
+    const double qb = 2.0 * dot(fa, ab);
+    const double qc = dot(fa, fa) - r * r;
+    const double disc = std::max(0.0, qb * qb - 4.0 * qa * qc);
+    const double t = qa > 0.0 ? std::clamp((-qb - std::sqrt(disc)) / (2.0 * qa), 0.0, 1.0) : 1.0;
+    out = a + t * ab;
+    return true;
+  }
+  return false;
+}
+
 bool Trail::fall_back() {
   // once past a crumb of the way home, the trail is not what trapped it
   if (count_ == 0 || count_ < home_from_ || reached_ + 1 <= count_) return false;

@@ -55,6 +55,10 @@ class Trail {
   /// `within`; false when none is.
   bool crumb_at(Vec2 from, double r, double tol, Vec2 nest, double within, Vec2& out) const;
 
+  /// The point where the way from the nest first comes within `r` of `from` (on the leg between two
+  /// crumbs); false when it never does, or starts that near.
+  bool first_within(Vec2 from, double r, Vec2& out) const;
+
   bool empty() const { return count_ == 0; }
 
   /// Length of the way home from `p` along the remaining crumbs [m].

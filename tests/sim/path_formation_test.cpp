@@ -301,6 +301,35 @@ TEST(PfTable, Row5LinkOutwardStopsOnTheTrailWhereTheTargetIsTheNearestChainLight
   EXPECT_EQ(fire(m, beside, on, true), "");
 }
 
+// R: spot_on_way (off by default; docs/detours.md). A robot backing off to the spot on the way it
+// came (round a wall's end, farther from the nest in a straight line than its target) stops as the
+// subgoal there, d_sub from its target, where the straight-line rule would keep it forming.
+TEST(PfTable, Row5SpotOnWayStopsAtTheSpotOnTheWayItCame) {
+  const Vec2 behind{-0.75, 0.0};  // the target 75 cm nearer the nest than the robot
+  Reading r;
+  r.add(Led::kRed, 7, 180, 75);
+  const auto at_spot = [&](Vec2 spot) {
+    PfMemory m = forming(behind);
+    m.way_spot_for = 7;
+    m.has_way_spot = true;
+    m.way_spot = spot;
+    return m;
+  };
+  Params off;
+  PfMemory m = at_spot({0.05, 0.0});
+  EXPECT_EQ(fire(m, r, off), "");  // the straight line: farther from the nest than its target
+  Params on;
+  on.spot_on_way = true;
+  m = at_spot({0.05, 0.0});
+  EXPECT_EQ(fire(m, r, on), "#5");
+  EXPECT_EQ(m.parent.id, 7);
+  m = at_spot({0.0, 0.60});  // d_sub from the target, but not yet at the spot: keeps forming
+  EXPECT_EQ(fire(m, r, on), "");
+  m = at_spot({0.05, 0.0});
+  m.way_spot_for = 9;  // the spot of another target
+  EXPECT_EQ(fire(m, r, on), "");
+}
+
 // R: tip_by_links (off by default; docs/detours.md). A forming robot walks down the chain by its
 // links: it re-targets to the target's child (the RED whose light names the target as parent), even
 // when the child lies farther from the nest, and not to an unrelated RED nearer the nest.

@@ -5,6 +5,8 @@
 // two faces are at least 47 cm apart.
 #include "sim/controllers/trail.hpp"
 
+#include <initializer_list>
+
 #include <gtest/gtest.h>
 
 namespace swarmpath::sim {
@@ -149,6 +151,38 @@ TEST(Trail, TheWayHomeFromTheTipStartsNearerTheNestThanTheTip) {
   Trail u = past_the_tip();
   u.start_home_within(at, {0.0, 0.0}, dist(tip, Vec2{0.0, 0.0}));
   EXPECT_LT(first_crumb(u, at).x, tip.x);
+}
+
+// spot_on_way [R]: the way out went north round a wall's end (x = 1.5, up to y = 2) and came down to
+// the tip from the north; the spot is where that way first came within the link's length of the tip
+// (north of it), not a point nearer the nest in a straight line, which lies behind the wall
+Trail walked(std::initializer_list<Vec2> corners) {
+  Trail t;
+  t.reset(*corners.begin());
+  for (auto it = corners.begin(); it + 1 != corners.end(); ++it) walk(t, *it, *(it + 1));
+  return t;
+}
+
+Trail round_a_wall() { return walked({{0.0, 0.0}, {0.0, 2.5}, {3.0, 2.5}, {3.0, 0.0}}); }
+
+TEST(Trail, TheWaySpotIsWhereTheWayOutFirstCameThatNearRoundAWall) {
+  const Vec2 tip{3.0, 0.0};
+  Vec2 c{};
+  const Trail t = round_a_wall();
+  ASSERT_TRUE(t.first_within(tip, 0.75, c));
+  EXPECT_NEAR(c.x, 3.0, 1e-9);
+  EXPECT_NEAR(c.y, 0.75, 1e-9);  // on the leg down to the tip, farther from the nest than the tip
+  // the straight-line spot: no crumb of the way 75 cm from the tip is nearer the nest than it
+  EXPECT_FALSE(t.crumb_at(tip, 0.75, 0.15, Vec2{}, dist(tip, Vec2{}), c));  // the nest at (0, 0)
+  // a way that passes the tip twice: the first time counts
+  // (back within 75 cm of the tip from the south-east at the end)
+  const Trail twice =
+      walked({{0.0, 0.0}, {0.0, 2.5}, {3.0, 2.5}, {3.0, 0.0}, {4.0, 0.0}, {4.0, -1.0}, {3.5, -0.5}});
+  ASSERT_TRUE(twice.first_within(tip, 0.75, c));
+  EXPECT_NEAR(c.y, 0.75, 1e-9);
+  // a way that starts within the distance, or never comes that near: none
+  EXPECT_FALSE(t.first_within({0.2, 0.2}, 0.75, c));
+  EXPECT_FALSE(t.first_within({6.0, 0.0}, 0.75, c));
 }
 
 }  // namespace

@@ -1,0 +1,68 @@
+// SPDX-License-Identifier: MIT
+// spot_on_way [R] (docs/detours.md, rows #5, #6b): a forming robot backing off to its spot takes the
+// point where its own way from the nest first came within d_sub + 5 cm of its target, not a point
+// nearer the nest in a straight line. In a small arena whose doorway lies far off the nest-goal line
+// (tests/data/far_door.toml), the straight-line spot lies toward the wall; the way the robots came
+// leads to the doorway.
+#include <gtest/gtest.h>
+
+#include "sim/controller.hpp"
+#include "sim/step.hpp"
+#include "test_support.hpp"
+
+namespace swarmpath::sim {
+namespace {
+
+struct Outcome {
+  bool formed = false;
+  int at_way_spot = 0;  ///< robots holding a chain link that backed off to a spot on their way
+};
+
+bool in_chain(PfState s) {
+  return s == PfState::kSubgoal || s == PfState::kOpt1 || s == PfState::kSubNest || s == PfState::kOpt2 ||
+         s == PfState::kPathDone;
+}
+
+Outcome run_far_door(const Params& p, Mode mode, std::uint64_t seed) {
+  const Scenario s = load_scenario(test::source_path("tests/data/far_door.toml"));
+  World w;
+  const Metrics met = run(
+      p, s, mode, seed, [](const World&) { return false; }, &w);
+  Outcome o;
+  o.formed = met.success;
+  for (const RobotMemory& mem : w.memory) {
+    if (in_chain(mem.pf.state) && mem.pf.has_way_spot && mem.pf.way_spot_for == mem.pf.parent.id)
+      ++o.at_way_spot;
+  }
+  return o;
+}
+
+// far_door, 50 robots, seeds 1-8, runs that formed their path, default -> spot_on_way: path formation
+// 3 -> 7 (seeds 1, 5, 6, 7 only with it; only forming robots that found the goal from its far side back
+// off to a spot, backoff_far_spot: 0-5 links at spots on the way at the end), task allocation 6 -> 8
+// (seeds 1, 7 only with it; every allocated robot backs off to a spot, ta_backoff_spot: 11-29 links)
+TEST(SpotOnWay, TheChainGrowsTheWayTheRobotsCameToAFarDoorway) {
+  const Params off;  // the default: spot_on_way = false
+  Params on = off;
+  on.spot_on_way = true;
+
+  const struct {
+    Mode mode;
+    std::uint64_t seed;
+  } cases[] = {{Mode::kPathFormation, 5},
+               {Mode::kPathFormation, 7},
+               {Mode::kTaskAllocation, 1},
+               {Mode::kTaskAllocation, 7}};
+
+  for (const auto& c : cases) {
+    const Outcome without = run_far_door(off, c.mode, c.seed);
+    const Outcome with = run_far_door(on, c.mode, c.seed);
+    EXPECT_FALSE(without.formed) << c.seed;
+    EXPECT_EQ(without.at_way_spot, 0) << c.seed;  // off: no robot chooses a spot on its way
+    EXPECT_TRUE(with.formed) << c.seed;
+    EXPECT_GT(with.at_way_spot, 0) << c.seed;  // links laid at spots on the way the robots came
+  }
+}
+
+}  // namespace
+}  // namespace swarmpath::sim
