@@ -152,11 +152,16 @@ Command to_view_edge(const Percept& in, const Params& p, RobotMemory& mem) {
 Command to_spot(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
   PfMemory& m = mem.pf;
   const Vec2 tgt = m.target.last_seen;
-  // R (spot_on_way): where its way from the nest first came that near the target, chosen once per
-  // target (the trail home consumes crumbs); falling back, it retraces that way from the crumb nearest it
+  // R (spot_on_way): a way with no crumb for the straight-line spot came round an obstacle's end: the
+  // spot is where it first came that near the target, chosen once per target (the trail home consumes
+  // crumbs); falling back, it retraces that way from the crumb nearest it
   if (p.spot_on_way && m.way_spot_for != m.target.id) {
     m.way_spot_for = m.target.id;
-    m.has_way_spot = mem.trail.first_within(tgt, (p.d_sub + 5.0) * kCm, m.way_spot);
+    Vec2 straight;  // a crumb of its way the straight-line rule accepts: that spot stands
+    const bool straight_ok =
+        p.spot_crumb_tol > 0.0 && mem.trail.crumb_at(tgt, (p.d_sub + 5.0) * kCm, p.spot_crumb_tol * kCm,
+                                                     mem.nest, dist(tgt, mem.nest), straight);
+    m.has_way_spot = !straight_ok && mem.trail.first_within(tgt, (p.d_sub + 5.0) * kCm, m.way_spot);
   }
   const bool on_way = p.spot_on_way && m.has_way_spot;
   const Vec2 spot_at = on_way ? m.way_spot : backoff_spot_at(p, mem, tgt);

@@ -39,8 +39,8 @@ Outcome run_far_door(const Params& p, Mode mode, std::uint64_t seed) {
 
 // far_door, 50 robots, seeds 1-8, runs that formed their path, default -> spot_on_way: path formation
 // 3 -> 7 (seeds 1, 5, 6, 7 only with it; only forming robots that found the goal from its far side back
-// off to a spot, backoff_far_spot: 0-5 links at spots on the way at the end), task allocation 6 -> 8
-// (seeds 1, 7 only with it; every allocated robot backs off to a spot, ta_backoff_spot: 11-29 links)
+// off to a spot, backoff_far_spot: a few links at spots on the way), task allocation 6 -> 8 (seeds 1, 7
+// only with it; every allocated robot backs off to a spot, ta_backoff_spot)
 TEST(SpotOnWay, TheChainGrowsTheWayTheRobotsCameToAFarDoorway) {
   const Params off;  // the default: spot_on_way = false
   Params on = off;
