@@ -351,6 +351,26 @@ std::string_view culprit(const std::string& message) {
   return std::string_view(message).substr(0, end);
 }
 
+// Switches that were measured and removed from the controller (docs/ablation.md): a params file that
+// still names one is told so, instead of "unknown key".
+struct RemovedParam {
+  std::string_view name;
+  std::string_view why;
+};
+
+constexpr std::array kRemoved{
+    RemovedParam{"nudge_parent", "it changed no run of the ablation (docs/ablation.md)"},
+    RemovedParam{
+        "T_nudge",
+        "it was nudge_parent's wait, and nudge_parent changed no run of the ablation (docs/ablation.md)"},
+    RemovedParam{"align_taper",
+                 "it cost about 400 ticks on the training arenas (docs/ablation.md); the alignment is SPEC "
+                 "§2.4's V = v_align v_max P/|P| + D"},
+    RemovedParam{"r_keep_pull",
+                 "it showed no effect on the paper or the training arenas (docs/ablation.md); R_keep bounds "
+                 "the target point P, as SPEC §2.4"},
+};
+
 Params parse(const TomlDoc& doc, const Params& base) {
   Params p = base;
   const TableReader root(doc, doc.root(), "");
@@ -358,6 +378,10 @@ Params parse(const TomlDoc& doc, const Params& base) {
     if (key == "meta") {
       (void)root.table("meta");  // free-form provenance: not checked
       continue;
+    }
+    for (const RemovedParam& gone : kRemoved) {
+      if (key == gone.name)
+        root.fail(key, "was removed from the controller: " + std::string(gone.why) + "; delete this line");
     }
     const ParamInfo* info = find_param(key);
     if (info == nullptr) continue;  // finish() reports it with a suggestion

@@ -111,6 +111,11 @@ TEST(ParamsRejects, UnknownNameWithSuggestion) {
   expect_rejected("v_max = 10\nd_detec = 30\n", 2, "d_detec", "did you mean 'd_detect'");
 }
 
+TEST(ParamsRejects, RemovedSwitchIsNamedAsRemoved) {
+  expect_rejected("v_max = 10\nalign_taper = true\n", 2, "align_taper", "was removed from the controller");
+  expect_rejected("T_nudge = 100\n", 1, "T_nudge", "delete this line");
+}
+
 TEST(ParamsRejects, ValueOutsideItsRange) {
   expect_rejected("\nd_sub = 120\n", 2, "d_sub", "outside its range [40, 95]");
   expect_rejected("T_lost = 2.5\n", 1, "T_lost", "expected an integer");
