@@ -21,7 +21,6 @@ const std::array kAdditions{
   Addition{"T_trap", "edge following out of a field's minima", "§2.1 fields", kBoth, {{{"T_trap", 0}}}, {}},
   Addition{"site_fidelity", "a trip starts at the last sighting of the chain", "§2.3 #2", kBoth, {{{"site_fidelity", 0}}}, {}},
   Addition{"travel_cap", "travel to a sighting ends the trip after 3 budgets", "§2.3 #2", kBoth, {{{"travel_cap", 0}}}, {"site_fidelity"}},
-  Addition{"blocked_trip_ends", "an explorer whose edge following gives up goes home", "§2.3 #2", kBoth, {{{"blocked_trip_ends", 0}}}, {"T_trap"}},
   Addition{"return_finds", "a robot going home takes the goal it finds", "§2.3 #1h, §2.6 T2", kBoth, {{{"return_finds", 0}}}, {}},
   Addition{"return_lured", "a scout going home turns to the goal it sees", "§2.6 T2", kTa, {{{"return_lured", 0}}}, {"return_finds"}},
   // going home along the breadcrumbs
@@ -31,10 +30,8 @@ const std::array kAdditions{
   Addition{"backoff_trail", "forming robots back off along their own way out", "§2.3 #5", kBoth, {{{"backoff_trail", 0}}}, {}},
   Addition{"retarget_nearer", "a forming robot re-targets to a RED nearer the nest", "§2.3 #5r", kBoth, {{{"retarget_nearer", 0}}}, {}},
   Addition{"subgoal_nestward", "subgoals form only nearer the nest than their target", "§2.3 #5, #6b", kBoth, {{{"subgoal_nestward", 0}}}, {}},
-  Addition{"stop_at_view_edge", "a target lost far off: back to where it was seen, stop", "§2.3 #7a", kBoth, {{{"stop_at_view_edge", 0}}}, {}},
   Addition{"form_retries", "a robot that lost its target goes home and tries again", "§2.3 #7, #8b", kBoth, {{{"form_retries", 0}}}, {}},
   Addition{"backoff_far_spot", "the goal found from its far side: back off to the spot", "§2.3 #5", kBoth, {{{"backoff_far_spot", 0}}}, {}},
-  Addition{"spot_patience", "patience on the way to the spot without a wall in the way", "§2.3 #5", kBoth, {{{"spot_patience", 0}}}, {"backoff_far_spot", "T_trap"}},
   Addition{"spot_crumb_tol", "the spot is a crumb of the robot's own way out", "§2.3 #5", kBoth, {{{"spot_crumb_tol", 0}}}, {"backoff_far_spot"}},
   Addition{"trail_nestward", "falling back from the spot, the trail starts nestward", "§2.3 #5", kBoth, {{{"trail_nestward", 0}}}, {"backoff_far_spot", "T_trap"}},
   Addition{"spot_on_way", "the spot is where the robot's own way out first came that near", "§2.3 #5, #6b", kBoth, {{{"spot_on_way", 0}}}, {"backoff_far_spot"}},

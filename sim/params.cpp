@@ -96,9 +96,6 @@ const std::array kTable{
   ParamInfo{ 0, "travel_cap", R, &P::travel_cap, 3, 0, 20, 0.5, "", "",
             "site_fidelity, guided_departure: a trip whose travel has lasted this many exploration budgets ends (row #2; 0: travel never ends a trip)",
             "§2.3 #2", {}},
-  ParamInfo{ 0, "blocked_trip_ends", B, &P::blocked_trip_ends, 1, 0, 1, 1, "", "",
-            "an explorer whose edge following gives up (no way farther from the nest: a corner of the arena) ends its trip (row #2; off: it spends its whole budget there)",
-            "§2.3 #2", {}},
   ParamInfo{ 0, "return_finds", B, &P::return_finds, 1, 0, 1, 1, "", "",
             "a robot going back to the nest (its budget spent) that finds the goal within d_detect takes it as an explorer would (row #1h; in task allocation it becomes the founder, T2); subgoals it ignores (off: returning robots ignore the goal too, SPEC's reading)",
             "§2.3 #1, §2.6 T2", {}},
@@ -129,17 +126,11 @@ const std::array kTable{
   ParamInfo{ 0, "trail_slack", R, &P::trail_slack, 45, 0, 3000, 5, "", "cm",
             "subgoal_nestward: a forming robot retracing its own way home (round an obstacle) may stop as a subgoal at most this much farther from the nest than its target (3000: anywhere on its way)",
             "§2.3 #5", {}},
-  ParamInfo{ 0, "stop_at_view_edge", B, &P::stop_at_view_edge, 1, 0, 1, 1, "", "",
-            "a forming robot that loses its target at least d_sub/2 from where it last saw it, nearer the nest, goes back there and becomes the subgoal (row #7a; off: row #7 only)",
-            "§2.3 #7a", {}},
   ParamInfo{ 0, "backoff_spot", B, &P::backoff_spot, 0, 0, 1, 1, "", "",
             "a forming robot backs off to the spot d_sub + 5 cm from its target toward the nest (false: along its own way from the nest)",
             "§2.3 #5", {}},
   ParamInfo{ 0, "backoff_far_spot", B, &P::backoff_far_spot, 1, 0, 1, 1, "", "",
             "a forming robot that found the goal from its far side (farther from the nest than the goal) backs off to the spot, not along its own way",
-            "§2.3 #5", {}},
-  ParamInfo{ 0, "spot_patience", R, &P::spot_patience, 300, 0, 3000, 25, "", "ticks",
-            "a forming robot backing off to its spot (backoff_spot, ta_backoff_spot, backoff_far_spot) that has not got trap_progress nearer it for this long, and senses no wall in the way (a proximity reading that no robot's light within 30 cm explains), retraces its own way from the nest instead; with a wall in the way, after T_trap/4 (0: T_trap/4 always)",
             "§2.3 #5", {}},
   ParamInfo{ 0, "spot_crumb_tol", R, &P::spot_crumb_tol, 15, 0, 100, 5, "", "cm",
             "a forming robot's spot is the crumb of its own way from the nest whose distance from the target is nearest d_sub + 5 cm, within this tolerance, among the crumbs nearer the nest than the target (the way it knows is passable, round an obstacle); none: the point d_sub + 5 cm from the target toward the nest (0: always that point)",
@@ -358,6 +349,10 @@ struct RemovedParam {
   std::string_view why;
 };
 
+constexpr std::string_view kNothingOnTraining =
+    "it showed nothing on the training arenas' ablation (docs/ablation.md); the controller behaves as its "
+    "off setting did";
+
 constexpr std::array kRemoved{
     RemovedParam{"nudge_parent", "it changed no run of the ablation (docs/ablation.md)"},
     RemovedParam{
@@ -369,6 +364,9 @@ constexpr std::array kRemoved{
     RemovedParam{"r_keep_pull",
                  "it showed no effect on the paper or the training arenas (docs/ablation.md); R_keep bounds "
                  "the target point P, as SPEC §2.4"},
+    RemovedParam{"blocked_trip_ends", kNothingOnTraining},
+    RemovedParam{"stop_at_view_edge", kNothingOnTraining},
+    RemovedParam{"spot_patience", kNothingOnTraining},
 };
 
 Params parse(const TomlDoc& doc, const Params& base) {

@@ -84,7 +84,6 @@ struct Params {
   double t_follow = 2000;           ///< longest edge following [ticks]
   bool site_fidelity = true;        ///< start an exploration trip toward the last goal/subgoal sighting
   double travel_cap = 3;            ///< row #2: travel ends the trip after this many budgets (0: never)
-  bool blocked_trip_ends = true;    ///< row #2: an edge following that gives up ends the trip
   bool return_finds = true;         ///< row #1h: a robot going home takes the goal it finds within d_detect
   bool return_lured = true;         ///< TA, return_finds: a scout going home turns to the goal it sees
   bool form_one_at_a_time = false;  ///< row #1: no forming while a WHITE robot is in view (p_form per tick)
@@ -94,19 +93,17 @@ struct Params {
   bool skip_blocked_crumbs = true;  ///< a robot going home passes over a crumb it cannot reach in T_trap
   // forming a subgoal (SPEC §2.3 rows #5-#8)
   bool backoff_trail = true;  ///< a forming robot backs off along its own way from the nest (else the field)
-  bool retarget_nearer = true;    ///< row #5r: a forming robot re-targets to a RED robot nearer the nest
-  bool subgoal_nestward = true;   ///< rows #5, #6b: a subgoal forms only nearer the nest than its target
-  double trail_slack = 45;        ///< subgoal_nestward, on its trail: how much farther it may stop [cm]
-  bool stop_at_view_edge = true;  ///< row #7a: a target lost far enough away: back to where it was seen, stop
-  bool backoff_spot = false;      ///< forming: back off to the spot d_sub from the target toward the nest
-  bool backoff_far_spot = true;   ///< forming: back off to the spot when the goal was found from its far side
-  double spot_patience = 300;     ///< spot back-off: ticks without progress, no wall in the way (0: T_trap/4)
-  double spot_crumb_tol = 15;     ///< the spot: a crumb of its way out this near d_sub + 5 cm [cm] (0: none)
-  bool trail_nestward = true;     ///< from the spot back to its trail: nearer the nest than the target
-  bool spot_on_way = false;       ///< the spot: where its way out first came that near the target
-  bool tip_by_links = false;      ///< row #5r: re-target to the target's child (by links), not by distance
-  bool link_outward = false;  ///< rows #5, #6b on its trail: stop if the target is the nearest chain light
-  double form_retries = 3;    ///< rows #7, #8b: a robot losing its target goes home, this often
+  bool retarget_nearer = true;   ///< row #5r: a forming robot re-targets to a RED robot nearer the nest
+  bool subgoal_nestward = true;  ///< rows #5, #6b: a subgoal forms only nearer the nest than its target
+  double trail_slack = 45;       ///< subgoal_nestward, on its trail: how much farther it may stop [cm]
+  bool backoff_spot = false;     ///< forming: back off to the spot d_sub from the target toward the nest
+  bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
+  double spot_crumb_tol = 15;    ///< the spot: a crumb of its way out this near d_sub + 5 cm [cm] (0: none)
+  bool trail_nestward = true;    ///< from the spot back to its trail: nearer the nest than the target
+  bool spot_on_way = false;      ///< the spot: where its way out first came that near the target
+  bool tip_by_links = false;     ///< row #5r: re-target to the target's child (by links), not by distance
+  bool link_outward = false;     ///< rows #5, #6b on its trail: stop if the target is the nearest chain light
+  double form_retries = 3;       ///< rows #7, #8b: a robot losing its target goes home, this often
   // aligning (SPEC §2.4, rows #10-#13) and the chain's links
   bool align_keep_view = true;        ///< rows #10, #13: an aligning robot keeps both references in view
   bool seek_hidden_reference = true;  ///< rows #11, #13: a reference out of view is looked for where it was

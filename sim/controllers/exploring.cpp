@@ -153,8 +153,6 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
                                     -field_toward(in.pose, mem.nest), in_crowd);
     if (trapped) return pf_drive(p, mem, p.v_max * follow_edge(in, mem.nav.side), PfState::kExploring);
   }
-  // an explorer whose edge following gets it nowhere (the arena's boundary, a corner) ends its trip
-  if (p.blocked_trip_ends && mem.nav.gave_up) m.explore_leg = ExploreLeg::kTripOver;
   const Avoidance avoid = diffusion(in.proximity, p);
   const Vec2 away = -field_toward(in.pose, mem.nest);
   Vec2 v = avoid.direction + p.w_away * away + p.w_rw * in.pose.to_local(mem.walk_dir) + sight.repulsion;

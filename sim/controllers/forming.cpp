@@ -58,10 +58,6 @@ bool entered_recovery_range(const PfContext& c) {
          nestward_of_target(c, c.in.pose.p);
 }
 
-bool back_at_view_edge(const PfContext& c) {
-  return c.m.form_leg == FormLeg::kToViewEdge && dist(c.in.pose.p, c.m.last_saw_target) <= 0.02;
-}
-
 bool target_lost_in_visible_range(const PfContext& c) {
   return lost(c.m.target, c.p) && dist(c.in.pose.p, c.m.target.last_seen) / kCm >= c.p.r_vis;
 }
@@ -104,17 +100,10 @@ void go_home_to_retry(const PfContext&, PfMemory& m) {
   m.target = Tracked{};
 }
 
-void next_form_leg(const Percept& in, const Params& p, Vec2 nest, PfMemory& m) {
+void next_form_leg(const Percept& in, const Params& p, PfMemory& m) {
   if (m.form_leg == FormLeg::kToTarget && m.target.visible &&
       dist(in.pose.p, m.target.last_seen) / kCm <= p.d_detect) {
     m.form_leg = FormLeg::kBackOff;
-  }
-  // lost at least d_sub/2 from where it was last seen, nearer the nest: the chain bends round the
-  // obstacle there
-  if (p.stop_at_view_edge && m.form_leg == FormLeg::kBackOff && lost(m.target, p) &&
-      dist(m.last_saw_target, m.target.last_seen) / kCm >= 0.5 * p.d_sub &&
-      dist(m.last_saw_target, nest) < dist(m.target.last_seen, nest)) {
-    m.form_leg = FormLeg::kToViewEdge;
   }
 }
 
@@ -135,20 +124,12 @@ Vec2 backoff_spot_at(const Params& p, const RobotMemory& mem, Vec2 tgt) {
   return len > 0.0 ? tgt + (r / len) * to_nest : mem.nest;
 }
 
-// back to where the target was last in view (row #7a)
-Command to_view_edge(const Percept& in, const Params& p, RobotMemory& mem) {
-  const Vec2 back = (1.0 / kCm) * in.pose.to_local(mem.pf.last_saw_target - in.pose.p);
-  const double len = norm(back);
-  if (len <= 2.0) return pf_stop(PfState::kSubgoalForming);
-  return pf_drive(p, mem, (std::min(p.v_max, len) / len) * back, PfState::kSubgoalForming);
-}
-
 // back off to the nest side of the target: the point d_sub (+5 cm) from it toward the nest, "in
 // between the starting point and the detected subgoal" [R spot_crumb_tol: the point of the robot's
 // own way out that far from it, nearer the nest: round an obstacle, the way it knows is passable].
-// Without progress toward it for spot_patience ticks, or a quarter of T_trap with a wall in the way,
-// along its own way from the nest [R trail_nestward: from the point of that way nearest it that is
-// nearer the nest than the target, not back past the target]
+// Without progress toward it for a quarter of T_trap, along its own way from the nest [R
+// trail_nestward: from the point of that way nearest it that is nearer the nest than the target, not
+// back past the target]
 Command to_spot(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
   PfMemory& m = mem.pf;
   const Vec2 tgt = m.target.last_seen;
@@ -165,10 +146,9 @@ Command to_spot(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
   }
   const bool on_way = p.spot_on_way && m.has_way_spot;
   const Vec2 spot_at = on_way ? m.way_spot : backoff_spot_at(p, mem, tgt);
-  const bool wall = wall_in_the_way(in, in.pose.to_local(spot_at - in.pose.p));
-  const double patience = p.spot_patience > 0.0 && !wall ? p.spot_patience : 0.25 * p.t_trap;
   const double trail_within = p.trail_nestward && !on_way ? dist(tgt, mem.nest) : Trail::kEverywhere;
-  const Vec2 f = nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest, patience, &spot_at, trail_within);
+  const Vec2 f =
+      nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest, 0.25 * p.t_trap, &spot_at, trail_within);
   const Vec2 v = with_avoidance(in, p, mem.nav, f) + sight.repulsion;
   return pf_drive(p, mem, p.v_max * v, PfState::kSubgoalForming);
 }
@@ -178,8 +158,6 @@ Command to_spot(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
 Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
   const PfMemory& m = mem.pf;
   switch (m.form_leg) {
-    case FormLeg::kToViewEdge:
-      return to_view_edge(in, p, mem);
     case FormLeg::kBackOff: {
       // the spot (a robot that found the goal from its far side: not round the goal, R), or
       const bool spot = p.backoff_spot || (m.role == PfRole::kAllocated && p.ta_backoff_spot) ||
@@ -213,7 +191,6 @@ void pf_join_chain_end(PfMemory& m, const Params& p, const Blob& red, const Pose
   m.way_spot_for = kNobody;
   m.parent = Tracked{};
   m.child = Tracked{};
-  m.last_saw_target = pose.p;
   m.safe_pos = pose.p;
   m.fired_tick = tick;
   m.sighting = m.target.last_seen;  // site fidelity, should it go exploring later

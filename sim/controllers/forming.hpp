@@ -15,7 +15,6 @@ bool found_subgoal_nearer_nest(const PfContext& c);     ///< #5r [R], label c wh
 bool target_at_subgoal_distance(const PfContext& c);    ///< #5
 bool reached_nest_before_d_sub(const PfContext& c);     ///< #6a
 bool entered_recovery_range(const PfContext& c);        ///< #6b
-bool back_at_view_edge(const PfContext& c);             ///< #7a [R]
 bool target_lost_in_visible_range(const PfContext& c);  ///< #7, label f
 bool forming_timeout_target_seen(const PfContext& c);   ///< #8a
 bool forming_timeout(const PfContext& c);               ///< #8b
@@ -31,9 +30,8 @@ void target_becomes_parent(const PfContext& c, PfMemory& m);  ///< #5-#8: stop a
 void go_home_to_retry(const PfContext& c, PfMemory& m);       ///< #7h [R]: one retry spent, home
 
 /// The forming robot's leg, after perception and before the table: at its target (within
-/// d_detect) it backs off; having lost it far enough away, nearer the nest, it goes back to where it
-/// last saw it (stop_at_view_edge, row #7a).
-void next_form_leg(const Percept& in, const Params& p, Vec2 nest, PfMemory& m);
+/// d_detect) it backs off.
+void next_form_leg(const Percept& in, const Params& p, PfMemory& m);
 
 /// SUBGOAL_FORMING (LED white): toward the target, then back off toward the nest from it.
 Command form_subgoal(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight);

@@ -53,7 +53,6 @@ bool nav_update(NavMemory& nav, const Params& p, Rng& rng, double progress_cm, c
       } else {
         nav.following = 0;
         nav.reversed = false;
-        nav.gave_up = true;
       }
     }
   } else if (p.t_trap > 0 && static_cast<double>(nav.stalled) >= p.t_trap && touching) {
@@ -136,21 +135,6 @@ Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Ve
     return follow_edge(in, nav.side);
   }
   return field;
-}
-
-bool wall_in_the_way(const Percept& in, Vec2 toward) {
-  const double cos_cone = std::cos(deg2rad(35.0));  // a blob this close to a sensor's axis explains it
-  constexpr double kRobotNear = 30.0;               // [cm]
-  const auto& dirs = proximity_directions();
-  for (std::size_t k = 0; k < kProximityCount; ++k) {
-    if (in.proximity[k] <= 0.0 || dot(dirs[k], toward) <= 0.0) continue;
-    bool robot = false;
-    for (const Blob& b : in.blobs) {
-      if (b.emitter >= 0 && b.distance_cm <= kRobotNear && dot(b.dir, dirs[k]) >= cos_cone) robot = true;
-    }
-    if (!robot) return true;
-  }
-  return false;
 }
 
 Vec2 with_avoidance(const Percept& in, const Params& p, const NavMemory& nav, Vec2 f) {

@@ -26,7 +26,6 @@ struct NavMemory {
   double follow_from = 0;      ///< progress when the following began [cm]
   std::int8_t side = 0;        ///< obstacle kept on the right (+1) or the left (-1); 0: not chosen
   std::int64_t off_edge = 0;   ///< ticks of the current following without any proximity reading
-  bool gave_up = false;        ///< a following ran out without progress
   bool on_trail = false;       ///< going home along the breadcrumbs
   bool fell_back = false;      ///< ... from a crumb it has been at, the nearest one having trapped it
   bool reversed = false;       ///< the current following has already turned back once
@@ -63,10 +62,6 @@ Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Ve
 Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest,
               double trap_ticks = -1.0, const Vec2* field_point = nullptr,
               double trail_within = Trail::kEverywhere);
-
-/// Something that is not a lit robot (a wall, an obstacle, a resting robot) on a proximity sensor
-/// within 90 degrees of `toward` (robot frame): no camera blob within 30 cm in that sensor's direction.
-bool wall_in_the_way(const Percept& in, Vec2 toward);
 
 /// A navigating robot's heading (robot frame): the navigator's direction `f` plus the proximity ring's
 /// avoidance (diffusion), which edge following leaves out, since it keeps to the edge itself.

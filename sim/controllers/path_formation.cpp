@@ -89,10 +89,10 @@ namespace {
 // SPEC §2.3, in its order (paper Table 2 labels where they exist). For each state the first row
 // whose guard holds fires; rows 6, 8, 9 and 13 are split where the SPEC lists two conditions. Rows
 // with a letter or a number past 14 are [R] (docs/CHOICES.md): #1h return_finds, #5r retarget_nearer,
-// #7a stop_at_view_edge, #7h form_retries (rows #7 and #8b go home instead, docs/detours.md),
+// #7h form_retries (rows #7 and #8b go home instead, docs/detours.md),
 // #15-#16 chain_bypass, #17 relink_recovery, #18-#20 chain_repair (before the rows that would act on
 // a gone neighbour).
-constexpr std::array<PfTransition, 34> kTable{{
+constexpr std::array<PfTransition, 33> kTable{{
   {PfState::kExploring,      found_goal_or_subgoal,        PfState::kSubgoalForming, take_target,           "#1",  "c"},
   {PfState::kExploring,      exploration_time_over,        PfState::kReturnToNest,   nullptr,               "#2",  "b"},
   {PfState::kReturnToNest,   found_on_the_way_home,        PfState::kSubgoalForming, take_target,           "#1h", "c"},
@@ -102,7 +102,6 @@ constexpr std::array<PfTransition, 34> kTable{{
   {PfState::kSubgoalForming, target_at_subgoal_distance,   PfState::kSubgoal,        target_becomes_parent, "#5",  ""},
   {PfState::kSubgoalForming, reached_nest_before_d_sub,    PfState::kSubgoal,        target_becomes_parent, "#6a", ""},
   {PfState::kSubgoalForming, entered_recovery_range,       PfState::kSubgoal,        target_becomes_parent, "#6b", ""},
-  {PfState::kSubgoalForming, back_at_view_edge,            PfState::kSubgoal,        target_becomes_parent, "#7a", ""},
   {PfState::kSubgoalForming, lost_target_may_retry,        PfState::kReturnToNest,   go_home_to_retry,      "#7h", ""},
   {PfState::kSubgoalForming, target_lost_in_visible_range, PfState::kRecovery,       nullptr,               "#7",  "f"},
   {PfState::kSubgoalForming, forming_timeout_target_seen,  PfState::kSubgoal,        target_becomes_parent, "#8a", ""},
@@ -139,7 +138,6 @@ static_assert(kRowsOf.begin[kPfStateCount] == kTable.size(), "a row whose state 
 void enter(const Percept& in, const Params& p, RobotMemory& mem, PfState to) {
   PfMemory& m = mem.pf;
   nav_reset(mem.nav);
-  m.last_saw_target = in.pose.p;
   m.align_leg = AlignLeg::kToFoot;
   m.safe_pos = in.pose.p;
   m.claimants = Claimants{};
@@ -204,7 +202,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   PfMemory& m = mem.pf;
   PfSight sight;
   pf_perceive(in, p, mem.nest, m, sight);
-  if (m.state == PfState::kSubgoalForming) next_form_leg(in, p, mem.nest, m);
+  if (m.state == PfState::kSubgoalForming) next_form_leg(in, p, m);
   sight.may_form = !p.form_one_at_a_time || m.state != PfState::kExploring || sight.lure == nullptr ||
                    mem.rng.bernoulli(p.p_form);
   // transitions happen only here, via the table

@@ -47,14 +47,13 @@ enum class ExploreLeg : std::uint8_t {
   kLead,                ///< guided_departure: the founder leading the allocated robots to its sighting (CYAN)
   kFollowThenWalk,      ///< guided_departure: following the CYAN guides (not budget), then exploring
   kFollowThenSighting,  ///< guided_departure: following the CYAN guides, then to the sighting
-  kTripOver,            ///< blocked_trip_ends, sighting_returns: row #2 ends the trip
+  kTripOver,            ///< sighting_returns: row #2 ends the trip
 };
 
 /// SUBGOAL_FORMING's legs.
 enum class FormLeg : std::uint8_t {
-  kToTarget,    ///< retarget_nearer, rest_recruit: walking to the target first (the chain's tip)
-  kBackOff,     ///< back off toward the nest from the target (its trail, or the spot)
-  kToViewEdge,  ///< stop_at_view_edge (#7a): back to where the target was last in view
+  kToTarget,  ///< retarget_nearer, rest_recruit: walking to the target first (the chain's tip)
+  kBackOff,   ///< back off toward the nest from the target (its trail, or the spot)
 };
 
 /// OPT1's and OPT2's legs (SPEC §2.4).
@@ -116,7 +115,6 @@ struct PfMemory {
   FormLeg form_leg = FormLeg::kBackOff;
   Tracked target;              ///< what the robot backs off from while forming
   bool far_side = false;       ///< found the goal from its far side (farther from the nest than it)
-  Vec2 last_saw_target;        ///< the robot's position when it last saw the target [m]
   int form_retries = 0;        ///< form_retries: how often it has lost its target and gone home (row #7h)
   int way_spot_for = kNobody;  ///< spot_on_way: the target whose spot `way_spot` is (none: not chosen)
   bool has_way_spot = false;   ///< spot_on_way: its way from the nest came within the spot's distance

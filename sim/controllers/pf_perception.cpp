@@ -225,7 +225,6 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
         m.help_until = in.tick + static_cast<std::int64_t>(3.0 * p.t_refound);
     }
   }
-  if (m.state == PfState::kSubgoalForming && m.target.visible) m.last_saw_target = in.pose.p;
   remember_sighting(in, nest, sight, m);
   if (m.state == PfState::kSubgoalForming && m.target.valid())
     sight.red_nearer_nest = red_nearer_nest(in, p, nest, m, claims);

@@ -136,8 +136,8 @@ TEST(ChainRepair, ARobotWhoseChildIsGoneIsTheChainsTipAgain) {
 }
 
 // short_chain (20 robots, nest and goal 3.6 m apart), path formation: two robots holding chain links
-// fail between ticks 200 and 600. Without the rule seeds 2, 4 and 8 form no path in 8 000 ticks;
-// with it each does (of seeds 1-8: 4 of 8 without, 7 of 8 with)
+// fail between ticks 200 and 600. Without the rule seeds 4 and 11 form no path in 8 000 ticks;
+// with it each does (of seeds 1-12: 8 of 12 without, 10 of 12 with)
 TEST(ChainRepair, ABrokenChainInASmallArenaFormsItsPathOnlyWithTheRule) {
   const Scenario s = with_faults(
       with_max_ticks(load_scenario(test::source_path("tests/data/short_chain.toml")), 8000),
@@ -149,7 +149,7 @@ TEST(ChainRepair, ABrokenChainInASmallArenaFormsItsPathOnlyWithTheRule) {
   spec_lost.chain_repair = false;
   Params repairing_spec_lost = repairing();
   repairing_spec_lost.form_retries = 0;
-  for (const std::uint64_t seed : {2, 4, 8}) {
+  for (const std::uint64_t seed : {4, 11}) {
     const Metrics off = evaluate(spec_lost, s, Mode::kPathFormation, seed);
     const Metrics on = evaluate(repairing_spec_lost, s, Mode::kPathFormation, seed);
     EXPECT_EQ(off.chain_failures, 2) << seed;

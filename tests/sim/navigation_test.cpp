@@ -111,26 +111,5 @@ TEST(Navigator, ARobotGoingHomePassesOverACrumbItCannotReach) {
   EXPECT_EQ(crumbs_left_when_blocked(off, 5 * t_trap), at_start);
 }
 
-// spot_patience: a forming robot retraces its trail at once only when a wall, not a robot,
-// stands between it and its spot. A reading that a robot's light within 30 cm explains is a robot.
-TEST(Navigator, AWallIsAReadingNoRobotsLightExplains) {
-  Percept in = against_a_wall();  // the front sensor (7.5 deg) reads
-  EXPECT_TRUE(wall_in_the_way(in, Vec2{1.0, 0.0}));
-  EXPECT_FALSE(wall_in_the_way(in, Vec2{-1.0, 0.0})) << "behind the robot: not in its way";
-  Blob robot;
-  robot.color = Led::kRed;
-  robot.emitter = 7;
-  robot.dir = Vec2{1.0, 0.0};
-  robot.distance_cm = 18.0;
-  const std::array<Blob, 1> blobs{robot};
-  in.blobs = blobs;
-  EXPECT_FALSE(wall_in_the_way(in, Vec2{1.0, 0.0})) << "a robot's light ahead explains the reading";
-  Blob far = robot;
-  far.distance_cm = 60.0;  // a light farther off does not
-  const std::array<Blob, 1> far_blobs{far};
-  in.blobs = far_blobs;
-  EXPECT_TRUE(wall_in_the_way(in, Vec2{1.0, 0.0}));
-}
-
 }  // namespace
 }  // namespace swarmpath::sim

@@ -114,6 +114,7 @@ TEST(ParamsRejects, UnknownNameWithSuggestion) {
 TEST(ParamsRejects, RemovedSwitchIsNamedAsRemoved) {
   expect_rejected("v_max = 10\nalign_taper = true\n", 2, "align_taper", "was removed from the controller");
   expect_rejected("T_nudge = 100\n", 1, "T_nudge", "delete this line");
+  expect_rejected("spot_patience = 300\n", 1, "spot_patience", "showed nothing on the training arenas");
 }
 
 TEST(ParamsRejects, ValueOutsideItsRange) {

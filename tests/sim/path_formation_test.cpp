@@ -56,7 +56,7 @@ std::string fire(PfMemory& m, const Reading& r, const Params& p = {}, bool on_tr
   const Percept in = r.percept();
   PfSight sight;
   pf_perceive(in, p, kNest, m, sight);
-  if (m.state == PfState::kSubgoalForming) next_form_leg(in, p, kNest, m);
+  if (m.state == PfState::kSubgoalForming) next_form_leg(in, p, m);
   const PfContext c{in, p, m, sight, kNest, on_trail};
   const PfTransition* row = pf_transition(c, m);
   return row ? std::string(row->row) : std::string();
@@ -386,14 +386,6 @@ TEST(PfTable, Row6bStopsInTheRecoveryRange) {
   EXPECT_EQ(fire(m2, r, off), "");
 }
 
-TEST(PfTable, Row7aStopsWhereTheTargetWasLastInView) {
-  PfMemory m = forming({0.60, 0.0});
-  m.form_leg = FormLeg::kToViewEdge;
-  m.last_saw_target = {0.0, 0.0};
-  EXPECT_EQ(fire(m, Reading{}), "#7a");
-  EXPECT_EQ(m.state, PfState::kSubgoal);
-}
-
 // SPEC's rows #7 and #8b: RECOVERY at once (form_retries = 0; with retries left, row #7h below)
 Params no_retries() {
   Params p;
@@ -403,8 +395,7 @@ Params no_retries() {
 
 TEST(PfTable, Row7TargetLostInTheVisibleRange) {  // label f
   PfMemory m = forming({1.05, 0.0});
-  m.target.unseen = 2;             // lost after this tick's miss (T_lost = 3)
-  m.last_saw_target = {0.9, 0.0};  // lost while still close to it: no view-edge stop
+  m.target.unseen = 2;  // lost after this tick's miss (T_lost = 3)
   EXPECT_EQ(fire(m, Reading{}, no_retries()), "#7");
   EXPECT_EQ(m.state, PfState::kRecovery);
 }
@@ -418,7 +409,6 @@ TEST(PfTable, Row8StallGuard) {
   EXPECT_EQ(seen.state, PfState::kSubgoal);
   PfMemory unseen = forming({0.40, 0.0});
   unseen.t_state = 600;
-  unseen.last_saw_target = {0.3, 0.0};
   EXPECT_EQ(fire(unseen, Reading{}, no_retries()), "#8b");
   EXPECT_EQ(unseen.state, PfState::kRecovery);
 }
@@ -429,8 +419,7 @@ TEST(PfTable, Row8StallGuard) {
 TEST(PfTable, Row7hLostTargetGoesHomeWhileRetriesLast) {
   const auto lost_it = [] {
     PfMemory m = forming({1.05, 0.0});
-    m.target.unseen = 2;             // lost after this tick's miss (T_lost = 3)
-    m.last_saw_target = {0.9, 0.0};  // close to it when lost: no view-edge stop
+    m.target.unseen = 2;  // lost after this tick's miss (T_lost = 3)
     return m;
   };
   Params p;
@@ -449,7 +438,6 @@ TEST(PfTable, Row7hLostTargetGoesHomeWhileRetriesLast) {
   EXPECT_EQ(fire(m, Reading{}), "#7h");  // the default: form_retries = 3
   PfMemory timed_out = forming({0.40, 0.0});
   timed_out.t_state = 600;
-  timed_out.last_saw_target = {0.3, 0.0};
   EXPECT_EQ(fire(timed_out, Reading{}, p), "#7h");
   PfMemory seen = forming({0.40, 0.0});
   seen.t_state = 600;
