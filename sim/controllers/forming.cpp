@@ -127,9 +127,9 @@ Vec2 backoff_spot_at(const Params& p, const RobotMemory& mem, Vec2 tgt) {
 // back off to the nest side of the target: the point d_sub (+5 cm) from it toward the nest, "in
 // between the starting point and the detected subgoal" [R spot_crumb_tol: the point of the robot's
 // own way out that far from it, nearer the nest: round an obstacle, the way it knows is passable].
-// Without progress toward it for a quarter of T_trap, along its own way from the nest [R
-// trail_nestward: from the point of that way nearest it that is nearer the nest than the target, not
-// back past the target]
+// Without progress toward it for a quarter of T_trap (a quarter of trap_progress: nav_home), along its
+// own way from the nest [R trail_nestward: from the point of that way nearest it that is nearer the
+// nest than the target, not back past the target]
 Command to_spot(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
   PfMemory& m = mem.pf;
   const Vec2 tgt = m.target.last_seen;

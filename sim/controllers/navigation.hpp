@@ -20,15 +20,17 @@
 namespace swarmpath::sim {
 
 struct NavMemory {
-  double best = -1e18;         ///< best progress since it last improved [cm]
-  std::int64_t stalled = 0;    ///< ticks since progress last improved by 5 cm
-  std::int64_t following = 0;  ///< ticks left of edge following (0: not following)
-  double follow_from = 0;      ///< progress when the following began [cm]
-  std::int8_t side = 0;        ///< obstacle kept on the right (+1) or the left (-1); 0: not chosen
-  std::int64_t off_edge = 0;   ///< ticks of the current following without any proximity reading
-  bool on_trail = false;       ///< going home along the breadcrumbs
-  bool fell_back = false;      ///< ... from a crumb it has been at, the nearest one having trapped it
-  bool reversed = false;       ///< the current following has already turned back once
+  double best = -1e18;             ///< best progress since it last improved [cm]
+  std::int64_t stalled = 0;        ///< ticks since progress last improved by trap_progress
+  double short_best = -1e18;       ///< nav_home with a window shorter than T_trap: its own record [cm]
+  std::int64_t short_stalled = 0;  ///< ... ticks since progress improved by trap_progress pro rata
+  std::int64_t following = 0;      ///< ticks left of edge following (0: not following)
+  double follow_from = 0;          ///< progress when the following began [cm]
+  std::int8_t side = 0;            ///< obstacle kept on the right (+1) or the left (-1); 0: not chosen
+  std::int64_t off_edge = 0;       ///< ticks of the current following without any proximity reading
+  bool on_trail = false;           ///< going home along the breadcrumbs
+  bool fell_back = false;          ///< ... from a crumb it has been at, the nearest one having trapped it
+  bool reversed = false;           ///< the current following has already turned back once
 };
 
 /// Clears the progress record (call when the robot starts on a new leg); keeps the side so that
@@ -58,7 +60,9 @@ Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Ve
 /// Toward the nest: the potential field; once the field has trapped the robot, its breadcrumb
 /// trail (when it has one); the edge while following.
 /// `trap_ticks` (default T_trap) is how long the field may make no progress before the trail;
-/// the field pulls toward `field_point` (default: the nest itself).
+/// a window shorter than T_trap asks for trap_progress pro rata (a quarter of T_trap: a quarter of
+/// trap_progress), the same rate of progress as T_trap does. The field pulls toward `field_point`
+/// (default: the nest itself).
 Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest,
               double trap_ticks = -1.0, const Vec2* field_point = nullptr,
               double trail_within = Trail::kEverywhere);

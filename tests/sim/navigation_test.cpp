@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "sim/controllers/trail.hpp"
+#include "sim/controllers/units.hpp"
 
 namespace swarmpath::sim {
 namespace {
@@ -109,6 +110,44 @@ TEST(Navigator, ARobotGoingHomePassesOverACrumbItCannotReach) {
   Params off = p;
   off.skip_blocked_crumbs = false;  // edge following, the crumb still ahead
   EXPECT_EQ(crumbs_left_when_blocked(off, 5 * t_trap), at_start);
+}
+
+// A forming robot backing off to its spot (ta_backoff_spot, backoff_far_spot) retraces its own way
+// from the nest once it has made no progress toward the spot for a quarter of T_trap. That window
+// asks for trap_progress pro rata (7.5 cm in 25 ticks, the rate of 30 cm in T_trap): asking for the
+// whole 30 cm in 25 ticks (60 % of v_max, turning round included) sent robots that were on their way
+// to the spot back along their trail, and their links stood beside their targets (env1, 100
+// robots, seed 1: 20 of 21 links). Returns the tick the robot takes to its trail, given `window`
+// ticks, when it gains `step_cm` a tick toward the spot (-1: not within `limit` ticks).
+int ticks_until_trail_from_spot(const Params& p, double window, double step_cm, int limit) {
+  Trail trail;
+  trail.reset({0.0, 0.0});
+  for (int k = 1; k <= 10; ++k) trail.record({0.25 * k, 0.0});  // its way out, to (2.5, 0)
+  NavMemory nav;
+  Rng rng(1);
+  const Vec2 spot{1.4, 0.0};
+  Percept in;
+  in.pose = Pose{{2.1, 0.0}, -1.0, 0.0};  // facing the spot, nothing on the proximity ring
+  for (int t = 1; t <= limit; ++t) {
+    nav_home(in, p, nav, rng, trail, {0.0, 0.0}, window, &spot);
+    if (nav.on_trail) return t;
+    in.pose.p.x -= step_cm / kCmPerM;
+  }
+  return -1;
+}
+
+TEST(Navigator, ARobotOnItsWayToTheSpotAtTheRateTTrapAsksForKeepsGoing) {
+  const Params p;  // T_trap 100, trap_progress 30 cm: a quarter of T_trap asks for 7.5 cm
+  const double quarter = 0.25 * p.t_trap;
+  const int q = static_cast<int>(quarter) + 1;  // the tick after the window
+  EXPECT_EQ(ticks_until_trail_from_spot(p, quarter, 0.0, 200), q) << "standing still";
+  EXPECT_EQ(ticks_until_trail_from_spot(p, quarter, 0.2, 200), q) << "5 cm in 25 ticks: too slow";
+  // 10 cm in 25 ticks, 40 cm per T_trap: on its way (asked for 30 cm in 25 ticks: the trail at 25)
+  EXPECT_EQ(ticks_until_trail_from_spot(p, quarter, 0.4, 150), -1);
+  // the whole of T_trap asks for the whole of trap_progress, as it always has
+  const int t_trap = static_cast<int>(p.t_trap) + 1;
+  EXPECT_EQ(ticks_until_trail_from_spot(p, p.t_trap, 0.25, 300), t_trap) << "25 cm in T_trap: too slow";
+  EXPECT_EQ(ticks_until_trail_from_spot(p, p.t_trap, 0.4, 150), -1);
 }
 
 }  // namespace
