@@ -101,6 +101,7 @@ struct Params {
   double spot_crumb_tol = 15;    ///< the spot: a crumb of its way out this near d_sub + 5 cm [cm] (0: none)
   bool trail_nestward = true;    ///< from the spot back to its trail: nearer the nest than the target
   bool spot_on_way = false;      ///< the spot: where its way out first came that near the target
+  bool way_after_edge = false;   ///< spot_on_way: only a way that followed an obstacle's edge
   bool tip_by_links = false;     ///< row #5r: re-target to the target's child (by links), not by distance
   bool link_outward = false;     ///< rows #5, #6b on its trail: stop if the target is the nearest chain light
   double form_retries = 3;       ///< rows #7, #8b: a robot losing its target goes home, this often

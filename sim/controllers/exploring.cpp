@@ -138,6 +138,7 @@ bool travel_to_sighting(const Percept& in, const Params& p, RobotMemory& mem, co
 
 Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
   mem.trail.record(in.pose.p);
+  if (mem.nav.following > 0) mem.trail.mark_edge();
   update_walk_heading(mem.walk_heading, mem.walk_dir, mem.rng, p);
   PfMemory& m = mem.pf;
   Command cmd;

@@ -143,6 +143,9 @@ Command to_spot(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
         p.spot_crumb_tol > 0.0 && mem.trail.crumb_at(tgt, (p.d_sub + 5.0) * kCm, p.spot_crumb_tol * kCm,
                                                      mem.nest, dist(tgt, mem.nest), straight);
     m.has_way_spot = !straight_ok && mem.trail.first_within(tgt, (p.d_sub + 5.0) * kCm, m.way_spot);
+    // R (way_after_edge): only a way that went round an obstacle on this trip (the robot followed
+    // its edge); in an open room the way is the robot's own wandering
+    if (p.way_after_edge) m.has_way_spot = m.has_way_spot && mem.trail.went_round();
   }
   const bool on_way = p.spot_on_way && m.has_way_spot;
   const Vec2 spot_at = on_way ? m.way_spot : backoff_spot_at(p, mem, tgt);

@@ -30,6 +30,7 @@ double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
 void Trail::reset(Vec2 start) {
   count_ = 1;
   reached_ = 0;
+  went_round_ = false;
   crumbs_[0] = start;
 }
 

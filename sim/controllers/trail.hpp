@@ -61,6 +61,11 @@ class Trail {
 
   bool empty() const { return count_ == 0; }
 
+  /// The robot followed an obstacle's edge on this trip (cleared by reset).
+  void mark_edge() { went_round_ = true; }
+
+  bool went_round() const { return went_round_; }
+
   /// Length of the way home from `p` along the remaining crumbs [m].
   double remaining(Vec2 p) const;
 
@@ -76,6 +81,7 @@ class Trail {
   int count_ = 0;
   int reached_ = 0;    // the crumb nearest home that the robot has been at since the last record
   int home_from_ = 0;  // count_ when start_home chose the first crumb
+  bool went_round_ = false;
 };
 
 }  // namespace swarmpath::sim

@@ -23,8 +23,8 @@ bool in_chain(PfState s) {
          s == PfState::kPathDone;
 }
 
-Outcome run_far_door(const Params& p, Mode mode, std::uint64_t seed) {
-  const Scenario s = load_scenario(test::source_path("tests/data/far_door.toml"));
+Outcome run_in(const char* arena, const Params& p, Mode mode, std::uint64_t seed) {
+  const Scenario s = load_scenario(test::source_path(arena));
   World w;
   const Metrics met = run(
       p, s, mode, seed, [](const World&) { return false; }, &w);
@@ -52,12 +52,36 @@ TEST(SpotOnWay, TheChainGrowsTheWayTheRobotsCameToAFarDoorway) {
   } cases[] = {{Mode::kPathFormation, 5}, {Mode::kPathFormation, 7}};
 
   for (const auto& c : cases) {
-    const Outcome without = run_far_door(off, c.mode, c.seed);
-    const Outcome with = run_far_door(on, c.mode, c.seed);
+    const Outcome without = run_in("tests/data/far_door.toml", off, c.mode, c.seed);
+    const Outcome with = run_in("tests/data/far_door.toml", on, c.mode, c.seed);
     EXPECT_FALSE(without.formed) << c.seed;
     EXPECT_EQ(without.at_way_spot, 0) << c.seed;  // off: no robot chooses a spot on its way
     EXPECT_TRUE(with.formed) << c.seed;
     EXPECT_GT(with.at_way_spot, 0) << c.seed;  // links laid at spots on the way the robots came
+  }
+}
+
+// way_after_edge [R]: the spot on the way only for a robot that followed an obstacle's edge on this
+// trip. In an open arena (short_chain) spot_on_way alone lays links where the allocated robots'
+// own wandering first came near their target (task allocation, seeds 1, 3 and 6: one each); with
+// way_after_edge no robot that wandered there takes that spot. In far_door, where the robots come
+// round the wall's end by its edge, links are still laid at spots on their way (seeds 1, 5, 6).
+TEST(SpotOnWay, OnlyAWayThatWentRoundAnObstacleGivesTheSpot) {
+  Params on;
+  on.spot_on_way = true;
+  Params edge = on;
+  edge.way_after_edge = true;
+  for (const std::uint64_t seed : {1, 3, 6}) {
+    const Outcome wander = run_in("tests/data/short_chain.toml", on, Mode::kTaskAllocation, seed);
+    const Outcome refined = run_in("tests/data/short_chain.toml", edge, Mode::kTaskAllocation, seed);
+    EXPECT_GT(wander.at_way_spot, 0) << seed;
+    EXPECT_EQ(refined.at_way_spot, 0) << seed;
+    EXPECT_TRUE(refined.formed) << seed;
+  }
+  for (const std::uint64_t seed : {1, 5, 6}) {
+    const Outcome round = run_in("tests/data/far_door.toml", edge, Mode::kTaskAllocation, seed);
+    EXPECT_GT(round.at_way_spot, 0) << seed;
+    EXPECT_TRUE(round.formed) << seed;
   }
 }
 

@@ -185,5 +185,17 @@ TEST(Trail, TheWaySpotIsWhereTheWayOutFirstCameThatNearRoundAWall) {
   EXPECT_FALSE(t.first_within({6.0, 0.0}, 0.75, c));
 }
 
+// way_after_edge [R]: a trip on which the robot followed an obstacle's edge went round something;
+// the next trip starts without it
+TEST(Trail, ATripRemembersThatItFollowedAnEdgeUntilTheNextTrip) {
+  Trail t = round_a_wall();
+  EXPECT_FALSE(t.went_round());
+  t.mark_edge();
+  walk(t, {3.0, 0.0}, {4.0, 0.0});
+  EXPECT_TRUE(t.went_round());
+  t.reset({0.0, 0.0});
+  EXPECT_FALSE(t.went_round());
+}
+
 }  // namespace
 }  // namespace swarmpath::sim
