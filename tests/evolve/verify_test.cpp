@@ -8,10 +8,12 @@
 #include <set>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "evolve/genome_manifest.hpp"
 #include "evolve/seeds.hpp"
 #include "evolve_test_support.hpp"
+#include "sim/params.hpp"
 
 namespace swarmpath::evolve {
 namespace {
@@ -80,16 +82,21 @@ TEST(Verify, EveryShippedTunedGenomeIsListedAndHoldsWhatItsRunChose) {
           << e.path() << " is not in genomes/tuned.toml";
     }
   }
-  // a genome edited after its run is caught
+  // a genome whose tuned value was edited after its run is caught (the first value its run tuned)
   const fs::path dir = testing::scratch("edited");
   ShippedGenome g = m.genomes.front();
+  const nlohmann::json run = nlohmann::json::parse(testing::read_text(g.run));
+  const std::string key = run.at("best").at("tuned").begin().key();
   std::string text = testing::read_text(g.params);
-  const auto at = text.find("\nv_max = ");
-  ASSERT_NE(at, std::string::npos);
-  text.replace(at, text.find('\n', at + 1) - at, "\nv_max = 6");
+  const auto at = text.find("\n" + key + " = ");
+  ASSERT_NE(at, std::string::npos) << key;
+  const sim::ParamInfo* info = sim::find_param(key);
+  ASSERT_NE(info, nullptr) << key;
+  const double edited = run["best"]["tuned"][key].get<double>() == info->lo ? info->hi : info->lo;
+  text.replace(at, text.find('\n', at + 1) - at, "\n" + key + " = " + std::to_string(edited));
   testing::write_text(dir / "g.toml", text);
   g.params = (dir / "g.toml").string();
-  EXPECT_NE(genome_mismatch(g).find("v_max"), std::string::npos);
+  EXPECT_NE(genome_mismatch(g).find(key), std::string::npos) << key;
 }
 
 }  // namespace
