@@ -31,6 +31,7 @@ const std::array kAdditions{
   Addition{"retarget_nearer", "a forming robot re-targets to a RED nearer the nest", "§2.3 #5r", kBoth, {{{"retarget_nearer", 0}}}, {}},
   Addition{"subgoal_nestward", "subgoals form only nearer the nest than their target", "§2.3 #5, #6b", kBoth, {{{"subgoal_nestward", 0}}}, {}},
   Addition{"form_retries", "a robot that lost its target goes home and tries again", "§2.3 #7, #8b", kBoth, {{{"form_retries", 0}}}, {}},
+  Addition{"T_leaf", "a RED leaf nobody extends leaves the chain and goes home", "§2.3 #21", kBoth, {{{"T_leaf", 0}}}, {}},
   Addition{"backoff_far_spot", "the goal found from its far side: back off to the spot", "§2.3 #5", kBoth, {{{"backoff_far_spot", 0}}}, {}},
   Addition{"spot_crumb_tol", "the spot is a crumb of the robot's own way out", "§2.3 #5", kBoth, {{{"spot_crumb_tol", 0}}}, {"backoff_far_spot"}},
   Addition{"trail_nestward", "falling back from the spot, the trail starts nestward", "§2.3 #5", kBoth, {{{"trail_nestward", 0}}}, {"backoff_far_spot", "T_trap"}},
@@ -63,7 +64,7 @@ const std::array kAdditions{
 
 // additions under trial: registered so that the ablation can measure them, off in the default
 // (docs/detours.md)
-constexpr std::array<std::string_view, 2> kOffInDefault{"spot_on_way", "way_after_edge"};
+constexpr std::array<std::string_view, 3> kOffInDefault{"spot_on_way", "way_after_edge", "T_leaf"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
 constexpr std::array kSpecDefaults{

@@ -99,6 +99,12 @@ void grandparent_becomes_parent(const PfContext& c, PfMemory& m) {
 
 void heir_becomes_parent(const PfContext& c, PfMemory& m) { m.parent = follow(*c.sight.heir, c.in.pose); }
 
+// row 21 [R] (T_leaf): a subgoal that nobody has named as parent or target for T_leaf ticks is a leaf
+// that no explorer extends (a side branch of the fan at the goal); it leaves as row 16's does
+bool leaf_unextended(const PfContext& c) {
+  return c.p.t_leaf > 0.0 && static_cast<double>(c.m.childless) >= c.p.t_leaf;
+}
+
 // row 16 [R]: back to the nest along its way out, then out again to the sighting, the RED robot
 // nearest the nest that it saw (pf_perceive): its next approach to the tip is from the nest side
 void leave_chain(const PfContext&, PfMemory& m) {

@@ -61,6 +61,7 @@ bool orphaned(const PfContext& c);           ///< #14, revert_orphans: the paren
 bool sees_grandparent(const PfContext& c);   ///< #15, chain_bypass
 bool bypassed(const PfContext& c);           ///< #16, chain_bypass
 bool heir_in_view(const PfContext& c);       ///< #17, relink_recovery
+bool leaf_unextended(const PfContext& c);    ///< #21, T_leaf
 
 // actions
 void child_is_nest(const PfContext& c, PfMemory& m);

@@ -90,9 +90,9 @@ namespace {
 // whose guard holds fires; rows 6, 8, 9 and 13 are split where the SPEC lists two conditions. Rows
 // with a letter or a number past 14 are [R] (docs/CHOICES.md): #1h return_finds, #5r retarget_nearer,
 // #7h form_retries (rows #7 and #8b go home instead, docs/detours.md),
-// #15-#16 chain_bypass, #17 relink_recovery, #18-#20 chain_repair (before the rows that would act on
+// #15-#16 chain_bypass, #21 T_leaf, #17 relink_recovery, #18-#20 chain_repair (before the rows that would act on
 // a gone neighbour).
-constexpr std::array<PfTransition, 33> kTable{{
+constexpr std::array<PfTransition, 34> kTable{{
   {PfState::kExploring,      found_goal_or_subgoal,        PfState::kSubgoalForming, take_target,           "#1",  "c"},
   {PfState::kExploring,      exploration_time_over,        PfState::kReturnToNest,   nullptr,               "#2",  "b"},
   {PfState::kReturnToNest,   found_on_the_way_home,        PfState::kSubgoalForming, take_target,           "#1h", "c"},
@@ -126,6 +126,7 @@ constexpr std::array<PfTransition, 33> kTable{{
   {PfState::kSubgoal,        sees_grandparent,             PfState::kSubgoal,        grandparent_becomes_parent, "#15", ""},
   {PfState::kSubgoal,        bypassed,                     PfState::kReturnToNest,   leave_chain,           "#16", ""},
   {PfState::kSubNest,        heir_in_view,                 PfState::kSubNest,        heir_becomes_parent,   "#17", ""},
+  {PfState::kSubgoal,        leaf_unextended,              PfState::kReturnToNest,   leave_chain,           "#21", ""},
 }};
 
 // clang-format on

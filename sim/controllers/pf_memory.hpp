@@ -125,6 +125,7 @@ struct PfMemory {
   AlignLeg align_leg = AlignLeg::kToFoot;
   Vec2 safe_pos;                ///< aligning: where the alignment began, both references in view [m]
   std::int64_t unclaimed = 0;   ///< SUBGOAL: consecutive ticks no robot claimed it (recruit_call)
+  std::int64_t childless = 0;   ///< T_leaf: consecutive ticks as a SUBGOAL that no robot in view names
   std::int64_t help_until = 0;  ///< refound_starved: its child went to fetch robots; it stays until this tick
   Claimants claimants;          ///< chain_bypass: who has named this subgoal as parent
   int grandparent = kNobody;    ///< chain_repair: whom the parent's light last named as its own parent

@@ -225,6 +225,14 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
         m.help_until = in.tick + static_cast<std::int64_t>(3.0 * p.t_refound);
     }
   }
+  // T_leaf [R]: how long this subgoal has stood without a robot in view naming it (a leaf nobody extends)
+  if (p.t_leaf > 0.0 && m.state == PfState::kSubgoal && m.role == PfRole::kSwarm) {
+    bool named = false;
+    for_each_naming(in, [&](int, int n) { named = named || n == in.id; });
+    m.childless = named ? 0 : m.childless + 1;
+  } else {
+    m.childless = 0;
+  }
   remember_sighting(in, nest, sight, m);
   if (m.state == PfState::kSubgoalForming && m.target.valid())
     sight.red_nearer_nest = red_nearer_nest(in, p, nest, m, claims);

@@ -446,6 +446,36 @@ TEST(PfTable, Row7hLostTargetGoesHomeWhileRetriesLast) {
   EXPECT_EQ(fire(seen, r, p), "#8a");
 }
 
+// R: T_leaf (row #21; docs/detours.md). A RED subgoal that no robot in view names as its parent or
+// target for T_leaf ticks in a row leaves the chain and goes home; a child's light (or a forming
+// robot's) naming it restarts the count; allocated robots (task allocation) and T_leaf = 0 never leave.
+TEST(PfTable, Row21ALeafNobodyNamesForTLeafLeavesTheChain) {
+  Params p;
+  p.t_leaf = 3;
+  PfMemory m = in_state(PfState::kSubgoal);
+  m.parent = tracked(5, {0.7, 0.0});
+  Reading alone;
+  alone.add(Led::kRed, 5, 0, 70, 2);  // my parent, in view
+  Reading named = alone;
+  named.add(Led::kWhite, 11, 180, 40, kMe);  // robot 11 forms from me
+  EXPECT_EQ(fire(m, alone, p), "");
+  EXPECT_EQ(fire(m, alone, p), "");
+  EXPECT_EQ(fire(m, named, p), "");  // named: the count starts again
+  EXPECT_EQ(m.childless, 0);
+  PfMemory off = m;
+  PfMemory allocated = m;
+  allocated.role = PfRole::kAllocated;
+  EXPECT_EQ(fire(m, alone, p), "");
+  EXPECT_EQ(fire(m, alone, p), "");
+  EXPECT_EQ(fire(m, alone, p), "#21");
+  EXPECT_EQ(m.state, PfState::kReturnToNest);
+  EXPECT_FALSE(m.parent.valid());
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(fire(off, alone, Params{}), "");  // the default genome's value aside, Params{}: 0
+    EXPECT_EQ(fire(allocated, alone, p), "");
+  }
+}
+
 TEST(PfTable, Row9aSubgoalSeesTheNest) {  // label g
   PfMemory m = in_state(PfState::kSubgoal);
   m.parent = tracked(7, {0.7, 0.0});
