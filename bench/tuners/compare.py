@@ -57,7 +57,23 @@ VARIANTS = {
     # base params' fresh runs then choose nothing, so a third finalist takes their share of the budget
     "swarmpath-cmaes-finalist": ("cmaes", {"reevaluate": ["keep_base = false", lambda body: "top_k = {}".format(
         int((re.search(r"(?m)^top_k = (\d+)", body) or [0, 3])[1]) + 1)]}),
+    # a smaller first step: CMA-ES's sigma0 at half of the problem's 0.3 (Optuna's CMA-ES starts at a sixth
+    # of each range, 0.167 of the unit box), its samples nearer the tuned base params
+    "swarmpath-cmaes-sigma015": ("cmaes", {"optimizer": ["sigma0 = 0.15"]}),
+    # another split of the same re-evaluation runs: one finalist and the base params on half again as many
+    # fresh runs each (top_k + 1 candidates x seeds stays the same), so one test of more pairs and no
+    # Bonferroni split
+    "swarmpath-cmaes-one-finalist": ("cmaes", {"reevaluate": [lambda body: one_finalist(body)]}),
 }
+
+
+def one_finalist(body):
+    """[reevaluate]'s lines for one finalist on the fresh runs that top_k finalists and the base params
+    share now: top_k = 1 and seeds = (top_k + 1) seeds / 2 (the same simulations)."""
+    k = int((re.search(r"(?m)^top_k = (\d+)", body) or [0, 3])[1])
+    n = int((re.search(r"(?m)^seeds = (\d+)", body) or [0, 4])[1])
+    assert (k + 1) * n % 2 == 0, "one finalist and the base params need an even share of the fresh runs"
+    return ["top_k = 1", f"seeds = {(k + 1) * n // 2}"]
 TUNERS = ["swarmpath-cmaes", "swarmpath-ga", "swarmpath-random", *VARIANTS, "irace", "optuna-tpe", "optuna-cmaes"]
 FINAL_SEED_BASE = 7_000_000_000  # final seeds 7e9 + k: no tuner draws these (evolve mixes 64-bit seeds,
 # irace's are below 2^31)
@@ -93,12 +109,13 @@ def config_copy(problem, tuner, seed, out):
             end = re.compile(r"(?m)^\[").search(text, head.end())
             end = end.start() if end else len(text)
             body = text[head.end():end]
-            for line in lines:
-                line = line(body) if callable(line) else line
-                key = line.split("=")[0].strip()
-                body, n = re.subn(rf"(?m)^{key} = .*$", line, body)
-                if n == 0:
-                    body = "\n" + line + body
+            for item in lines:
+                item = item(body) if callable(item) else item
+                for line in [item] if isinstance(item, str) else item:
+                    key = line.split("=")[0].strip()
+                    body, n = re.subn(rf"(?m)^{key} = .*$", line, body)
+                    if n == 0:
+                        body = "\n" + line + body
             text = text[:head.end()] + body + text[end:]
         if optimiser != "cmaes":
             # the same candidates per generation as CMA-ES, so the same generations fit the budget
@@ -235,11 +252,13 @@ def cmd_finals(a):
     for d in sorted((out / "runs").glob("*/meta.json")):
         picks[d.parent.name] = swarmpath.Params.load(str(d.parent / "pick.toml"))
         cache[d.parent.name] = d.parent / "final.json"
-    results, todo = {}, []
+    results, todo, as_base = {}, [], []
     for name, params in picks.items():
         old = json.loads(cache[name].read_text()) if cache[name].exists() else None
         if old and old["cases"] == case_list and old["params"] == params.to_dict():
             results[name] = old["result"]
+        elif name != "base" and params.to_dict() == c.base.to_dict():
+            as_base.append(name)  # the base params themselves (keep_base): their runs, not run twice
         else:
             todo.append(name)
     t0 = time.perf_counter()
@@ -249,6 +268,10 @@ def cmd_finals(a):
         results[name] = {"fitness": s["fitness"], "success_rate": s["success_rate"], "mean_ticks": s["mean_ticks"],
                          "runs": [r["fitness"] for r in s["scores"]],
                          "values": {g["name"]: picks[name][g["name"]] for g in c.genes}}
+        cache[name].write_text(json.dumps({"cases": case_list, "params": picks[name].to_dict(),
+                                           "result": results[name]}))
+    for name in as_base:
+        results[name] = results["base"]
         cache[name].write_text(json.dumps({"cases": case_list, "params": picks[name].to_dict(),
                                            "result": results[name]}))
     finals = {"cases": case_list, "seconds": seconds, "evaluated": todo, "picks": {n: results[n] for n in picks}}
