@@ -417,6 +417,24 @@ void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string
   }
   r.race_level = number_in(*t, "race_level", r.race_level, 1e-6, 0.5);
   r.race_first_test = int_in(*t, "race_first_test", r.race_first_test, 2, 100000);
+  r.race_base = t->boolean_or("race_base", r.race_base);
+  if (r.race_base && c.multi_objective()) {
+    t->fail("race_base", "racing applies to the finalists of a single-objective run: remove race_base");
+  }
+  if (r.race_base && r.race) {
+    t->fail("race_base",
+            "race the finalists against each other (race) or against the base params "
+            "(race_base), not both");
+  }
+  if (r.race_base && !c.evaluation.families.empty()) {
+    t->fail("race_base",
+            "racing against the base params draws more fresh seeds of scenario files; "
+            "arena families' validation arenas are fixed: remove race_base");
+  }
+  if (!r.race_base && t->has("race_base_level")) {
+    t->fail("race_base_level", "applies only with race_base = true: remove it or set race_base = true");
+  }
+  r.race_base_level = number_in(*t, "race_base_level", r.race_base_level, 1e-6, 0.5);
   r.keep_base = t->boolean_or("keep_base", r.keep_base);
   if (r.keep_base && c.multi_objective()) {
     t->fail("keep_base",
@@ -426,6 +444,11 @@ void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string
     t->fail("keep_base_level", "applies only with keep_base = true: remove it or set keep_base = true");
   }
   r.keep_base_level = number_in(*t, "keep_base_level", r.keep_base_level, 1e-6, 0.5);
+  if (r.race_base && !r.keep_base) {
+    t->fail("race_base",
+            "racing against the base params leaves them the pick when every finalist is "
+            "dropped: it needs keep_base = true");
+  }
   if (t->has("held_out")) {
     r.held_out = scenario_list(*t, "held_out", base_dir);
   } else {
@@ -614,6 +637,11 @@ nlohmann::ordered_json config_json(const EvolveConfig& c) {
   if (c.reevaluate.race) {  // only when on: configs without it keep their hash
     j["reevaluate"]["race"] = true;
     j["reevaluate"]["race_level"] = c.reevaluate.race_level;
+    j["reevaluate"]["race_first_test"] = c.reevaluate.race_first_test;
+  }
+  if (c.reevaluate.race_base) {  // only when on: configs without it keep their hash
+    j["reevaluate"]["race_base"] = true;
+    j["reevaluate"]["race_base_level"] = c.reevaluate.race_base_level;
     j["reevaluate"]["race_first_test"] = c.reevaluate.race_first_test;
   }
   // keeping the base params is the default of single-objective runs: their hash names it only when

@@ -69,7 +69,13 @@ struct Reevaluation {
   bool every_generation = false;      ///< evaluate each generation's best on the validation set (log.csv)
   bool race = false;                  ///< race the finalists block by block (evolve/racing.hpp)
   double race_level = 0.05;           ///< racing: drop a finalist when its paired t-test p < this
-  int race_first_test = 2;            ///< racing: blocks run before the first test
+  int race_first_test = 2;            ///< racing: blocks run before the first test (also race_base's)
+  /// Race the finalists against the base params (evolve/base_racing.hpp): block by block, a
+  /// finalist worse than the base params by a one-sided paired t-test at race_base_level is
+  /// dropped, and the simulations it would have run buy more blocks of fresh cases for the rest;
+  /// with every finalist dropped the re-evaluation stops. The same simulation budget at most.
+  bool race_base = false;
+  double race_base_level = 0.2;  ///< race_base: drop a finalist when its test of being worse has p < this
   /// The base params compete with the finalists on the fresh cases: the pick is the base params
   /// unless the best finalist beats them by a one-sided paired t-test (evolve/base_selection.hpp).
   /// Single-objective runs only (a multi-objective run reports its whole front).

@@ -81,6 +81,40 @@ double paired_t_p_value(std::span<const double> d) {
   return student_t_upper(mean / (sd / std::sqrt(n)), n - 1.0);
 }
 
+std::int64_t run_block(const CaseObjective& f, const std::vector<Decoded>& candidates,
+                       const std::vector<bool>& alive, const std::vector<EvalCase>& block,
+                       BatchEvaluator& evaluator, const BatchProgress& progress, RaceOutcome& out) {
+  std::vector<Decoded> running;
+  std::vector<std::size_t> index;
+  std::int64_t simulations = 0;
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
+    if (!alive[i]) continue;
+    running.push_back(candidates[i]);
+    index.push_back(i);
+    if (candidates[i].violation.empty()) simulations += static_cast<std::int64_t>(block.size());
+  }
+  const std::vector<RunScore> scores = evaluate_batch(f, running, block, evaluator, progress);
+  for (std::size_t j = 0; j < running.size(); ++j) {
+    FinalistRuns& fr = out.finalists[index[j]];
+    fr.cases.insert(fr.cases.end(), block.begin(), block.end());
+    fr.scores.insert(fr.scores.end(), scores.begin() + static_cast<std::ptrdiff_t>(j * block.size()),
+                     scores.begin() + static_cast<std::ptrdiff_t>((j + 1) * block.size()));
+  }
+  return simulations;
+}
+
+bool drop_if_worse(RaceOutcome& out, std::vector<bool>& alive, std::size_t i, std::span<const double> runs,
+                   std::span<const double> reference, double level, int blocks) {
+  std::vector<double> d(runs.size());
+  for (std::size_t k = 0; k < d.size(); ++k) d[k] = runs[k] - reference[k];
+  const double p = paired_t_p_value(d);
+  if (!(p < level)) return false;
+  alive[i] = false;
+  out.finalists[i].dropped_after = blocks;
+  out.finalists[i].p_value = p;
+  return true;
+}
+
 RaceOutcome reevaluate_finalists(const CaseObjective& f, const std::vector<Decoded>& candidates,
                                  std::size_t contenders, const std::vector<EvalCase>& cases,
                                  const Reevaluation& r, BatchEvaluator& evaluator,
@@ -111,21 +145,7 @@ RaceOutcome reevaluate_finalists(const CaseObjective& f, const std::vector<Decod
     for (std::size_t k = 0; k < cases.size(); ++k) {
       if (block_of[k] == b) block.push_back(cases[k]);
     }
-    std::vector<Decoded> running;
-    std::vector<std::size_t> index;
-    for (std::size_t i = 0; i < candidates.size(); ++i) {
-      if (!alive[i]) continue;
-      running.push_back(candidates[i]);
-      index.push_back(i);
-      if (candidates[i].violation.empty()) out.summary.simulations += static_cast<std::int64_t>(block.size());
-    }
-    const std::vector<RunScore> scores = evaluate_batch(f, running, block, evaluator, progress);
-    for (std::size_t j = 0; j < running.size(); ++j) {
-      FinalistRuns& fr = out.finalists[index[j]];
-      fr.cases.insert(fr.cases.end(), block.begin(), block.end());
-      fr.scores.insert(fr.scores.end(), scores.begin() + static_cast<std::ptrdiff_t>(j * block.size()),
-                       scores.begin() + static_cast<std::ptrdiff_t>((j + 1) * block.size()));
-    }
+    out.summary.simulations += run_block(f, candidates, alive, block, evaluator, progress, out);
     if (b + 1 < r.race_first_test || b + 1 == blocks) continue;
     // the best contender so far by its mean over the training cases run (ties: the earlier finalist)
     const auto training_fitness = [&](std::size_t i) {
@@ -152,15 +172,7 @@ RaceOutcome reevaluate_finalists(const CaseObjective& f, const std::vector<Decod
     }
     if (best == contenders) continue;
     for (std::size_t i = 0; i < contenders; ++i) {
-      if (!alive[i] || i == best) continue;
-      std::vector<double> d(runs[i].size());
-      for (std::size_t k = 0; k < d.size(); ++k) d[k] = runs[i][k] - runs[best][k];
-      const double p = paired_t_p_value(d);
-      if (p < r.race_level) {
-        alive[i] = false;
-        out.finalists[i].dropped_after = b + 1;
-        out.finalists[i].p_value = p;
-      }
+      if (alive[i] && i != best) drop_if_worse(out, alive, i, runs[i], runs[best], r.race_level, b + 1);
     }
   }
   return out;

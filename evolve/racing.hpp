@@ -49,6 +49,17 @@ double student_t_upper(double t, double df);
 /// fewer than 2 values; 0 or 1 when they are all equal, by their sign).
 double paired_t_p_value(std::span<const double> d);
 
+/// Runs `block` for the candidates still `alive` (one batch) and appends each one's cases and scores
+/// to its entry of `out.finalists`; returns the simulations run (valid candidates x cases).
+std::int64_t run_block(const CaseObjective& f, const std::vector<Decoded>& candidates,
+                       const std::vector<bool>& alive, const std::vector<EvalCase>& block,
+                       BatchEvaluator& evaluator, const BatchProgress& progress, RaceOutcome& out);
+
+/// Drops finalist `i` (its `alive` flag off, dropped after `blocks` blocks) when a one-sided paired
+/// t-test finds `runs` worse than `reference`, case by case, at p < `level`; true when it did.
+bool drop_if_worse(RaceOutcome& out, std::vector<bool>& alive, std::size_t i, std::span<const double> runs,
+                   std::span<const double> reference, double level, int blocks);
+
 /// Re-evaluates `candidates` on `cases`: the first `contenders` race when r.race (the rest, e.g.
 /// the base params, run every case); without racing, one batch of every case.
 RaceOutcome reevaluate_finalists(const CaseObjective& f, const std::vector<Decoded>& candidates,

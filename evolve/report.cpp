@@ -29,7 +29,7 @@ nlohmann::ordered_json finalist_json(const EvolveConfig& c, const Finalist& f, s
   j["reevaluated"] = stats_json(f.reevaluated);
   j["held_out"] = f.held_out.runs > 0 ? stats_json(f.held_out) : nlohmann::ordered_json(nullptr);
   if (f.arenas.runs > 0) j["validation_arenas"] = stats_json(f.arenas);
-  if (c.reevaluate.race) {
+  if (c.reevaluate.race || c.reevaluate.race_base) {
     j["dropped_after_blocks"] = f.dropped_after;
     j["dropped_p_value"] =
         f.dropped_after > 0 ? nlohmann::ordered_json(f.p_value) : nlohmann::ordered_json(nullptr);
@@ -284,8 +284,9 @@ nlohmann::ordered_json run_json(const EvolveConfig& c, const RunResult& r, int t
     }
     j["capping"] = k;
   }
-  if (c.reevaluate.race) {
-    j["racing"] = {{"blocks", r.race.blocks},
+  if (c.reevaluate.race || c.reevaluate.race_base) {
+    j["racing"] = {{"against", c.reevaluate.race_base ? "base params" : "best finalist"},
+                   {"blocks", r.race.blocks},
                    {"simulations", r.race.simulations},
                    {"simulations_without_racing", r.race.without_racing}};
   }

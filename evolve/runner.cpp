@@ -8,6 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "evolve/base_racing.hpp"
 #include "evolve/capping.hpp"
 #include "evolve/report.hpp"
 #include "evolve/resume_check.hpp"
@@ -379,8 +380,11 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   finalists.push_back(Decoded{c.genome.base, false, {}});
   note("re-evaluating " + std::to_string(st.elites.size()) + " finalists and the base params on " +
        std::to_string(result.reevaluation_cases.size()) + " fresh cases each");
-  const RaceOutcome race = reevaluate_finalists(f, finalists, st.elites.size(), result.reevaluation_cases,
-                                                c.reevaluate, evaluator, o.progress);
+  const RaceOutcome race =
+      c.reevaluate.race_base ? race_against_base(f, finalists, result.reevaluation_cases, c.seed,
+                                                 c.reevaluate, evaluator, o.progress)
+                             : reevaluate_finalists(f, finalists, st.elites.size(), result.reevaluation_cases,
+                                                    c.reevaluate, evaluator, o.progress);
   result.race = race.summary;
   std::optional<std::size_t> best;
   for (std::size_t i = 0; i < finalists.size(); ++i) {
@@ -405,6 +409,15 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
       best = i;
     }
   }
+  // racing against the base params dropped every finalist: the base params stay, and the finalist
+  // best by its mean over the blocks it ran is reported beside them
+  const bool every_finalist_dropped = !best && c.reevaluate.race_base;
+  if (every_finalist_dropped) {
+    for (std::size_t i = 0; i < result.finalists.size(); ++i) {
+      if (!best || result.finalists[i].reevaluated.fitness < result.finalists[*best].reevaluated.fitness)
+        best = i;
+    }
+  }
   result.best = best.value_or(0);
   if (c.reevaluate.keep_base && best) {
     // the best finalist against the base params, run by run on the training cases both ran
@@ -415,10 +428,13 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
         v.push_back(s.fitness);
       return v;
     };
+    std::vector<double> base_runs = training_fitness(finalists.size() - 1);
+    base_runs.resize(std::min(base_runs.size(), training_fitness(*best).size()));  // a dropped one's blocks
     result.selection =
-        select_against_base(training_fitness(*best), training_fitness(finalists.size() - 1),
-                            static_cast<int>(result.finalists.size()), c.reevaluate.keep_base_level);
+        select_against_base(training_fitness(*best), base_runs, static_cast<int>(result.finalists.size()),
+                            c.reevaluate.keep_base_level);
     result.selection.finalist = *best;
+    if (every_finalist_dropped) result.selection.base_kept = true;
     note(result.selection.base_kept
              ? "kept the base params: the best finalist's paired test p = " +
                    short_text(result.selection.p_value) + " is not below " +
@@ -426,9 +442,10 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
              : "finalist " + std::to_string(*best) + " beat the base params: p = " +
                    short_text(result.selection.p_value) + " < " + short_text(result.selection.threshold));
   }
-  if (c.reevaluate.race) {
-    note("racing: " + std::to_string(result.race.simulations) + " of " +
-         std::to_string(result.race.without_racing) + " re-evaluation simulations run");
+  if (c.reevaluate.race || c.reevaluate.race_base) {
+    note((c.reevaluate.race_base ? "racing against the base params: " : "racing: ") +
+         std::to_string(result.race.simulations) + " of " + std::to_string(result.race.without_racing) +
+         " re-evaluation simulations run in " + std::to_string(result.race.blocks) + " blocks");
   }
   result.seconds = clock.recorded();
   result.state = st;

@@ -18,6 +18,8 @@ base params as its starting point:
   swarmpath-cmaes-capped  the same with `[evaluation] capping = true` (docs/racing.md).
   swarmpath-cmaes-finalist  the same with `[reevaluate] keep_base = false` and one more finalist: the
                           best finalist is the pick even when it is no better than the base params.
+  swarmpath-cmaes-sigma015, -one-finalist, -race-base  sigma0 0.15; one finalist and the base params on
+                          the same fresh runs in all; the finalists raced against the base params.
   irace                   `swarmpath irace` scenario, irace's seed = tuner seed, maxExperiments =
                           the budget; the pick is irace's best (elite 1), `swarmpath irace import`.
   optuna-<sampler>        examples/optuna_tune.py's study: budget / runs-per-trial trials, every
@@ -64,6 +66,9 @@ VARIANTS = {
     # fresh runs each (top_k + 1 candidates x seeds stays the same), so one test of more pairs and no
     # Bonferroni split
     "swarmpath-cmaes-one-finalist": ("cmaes", {"reevaluate": [lambda body: one_finalist(body)]}),
+    # the finalists raced against the base params (docs/racing.md): a finalist worse than them is dropped
+    # and its fresh runs go to more paired runs of the rest; with every finalist dropped it stops early
+    "swarmpath-cmaes-race-base": ("cmaes", {"reevaluate": ["race_base = true"]}),
 }
 
 
@@ -146,7 +151,8 @@ def run_swarmpath(config, tuner, seed, d, threads):
     fresh = sum(1 for k in run["seeds"]["reevaluation"] if not k["held_out"])
     selection = run.get("selection", {"keep_base": False, "base_kept": False})
     chosen_from = len(run["finalists"]) + (1 if selection["keep_base"] else 0)
-    meta = {"simulations": run["runs"] + chosen_from * fresh, "generations": run["generations"],
+    chose = run["racing"]["simulations"] if "racing" in run else chosen_from * fresh  # racing: what it ran
+    meta = {"simulations": run["runs"] + chose, "generations": run["generations"],
             "selection": selection}
     if "capping" in run:  # runs stopped at the cap count as runs, runs started again count twice
         meta["capping"] = run["capping"]
