@@ -283,7 +283,8 @@ def cmd_finals(a):
     finals = {"cases": case_list, "seconds": seconds, "evaluated": todo, "picks": {n: results[n] for n in picks}}
     (out / "finals.json").write_text(json.dumps(finals, indent=1))
     print(f"finals: {len(todo)} picks x {len(cases)} fresh runs in {seconds:.0f} s "
-          f"({len(picks) - len(todo)} more from earlier finals on the same runs)")
+          f"({len(as_base)} the base params themselves, {len(picks) - len(todo) - len(as_base)} more from earlier "
+          "finals on the same runs)")
 
 
 # Student's t quantile (0.975) for small samples, then the normal's

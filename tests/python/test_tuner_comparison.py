@@ -52,14 +52,20 @@ def test_capped_variant_keeps_the_pick_and_finals_reuse_earlier_runs(sp, tmp_pat
     picks = [sp.Params.load(os.path.join(out, "runs", f"{t}-s1", "pick.toml")).to_dict()
              for t in ("swarmpath-cmaes", "swarmpath-cmaes-capped")]
     assert picks[0] == picks[1]
-    assert "3 picks x 3 fresh runs" in compare("finals", "--out", out, "--final-seeds", "3", "--threads", "1")
+    # a pick that is the base params (keep_base) takes the base params' runs instead of running them again
+    base = sp.EvolveConfig.load(TINY_TUNE).base.to_dict()
+    new = 1 + 2 * (picks[0] != base)
+    assert f"{new} picks x 3 fresh runs" in compare("finals", "--out", out, "--final-seeds", "3", "--threads", "1")
     first = json.loads(open(os.path.join(out, "finals.json")).read())
+    if picks[0] == base:
+        assert first["picks"]["swarmpath-cmaes-s1"] == first["picks"]["base"]
+        assert first["evaluated"] == ["base"]
     # the same cases again: every pick's runs are reused, with the same results
     assert "0 picks x 3 fresh runs" in compare("finals", "--out", out, "--final-seeds", "3", "--threads", "1")
     again = json.loads(open(os.path.join(out, "finals.json")).read())
     assert again["picks"] == first["picks"] and again["evaluated"] == []
     # other cases (more final seeds): every pick runs again
-    assert "3 picks x 4 fresh runs" in compare("finals", "--out", out, "--final-seeds", "4", "--threads", "1")
+    assert f"{new} picks x 4 fresh runs" in compare("finals", "--out", out, "--final-seeds", "4", "--threads", "1")
 
 
 def test_keep_base_counts_the_base_params_and_the_finalist_variant_spends_the_same(sp, tmp_path):
@@ -78,3 +84,21 @@ def test_keep_base_counts_the_base_params_and_the_finalist_variant_spends_the_sa
     pick = sp.Params.load(os.path.join(out, "runs", "swarmpath-cmaes-s1", "pick.toml")).to_dict()
     base = sp.EvolveConfig.load(TINY_TUNE).base.to_dict()
     assert (pick == base) == selection["base_kept"]
+
+
+def test_variants_of_the_pick_spend_the_same_budget(sp, tmp_path):
+    out = str(tmp_path / "tuners")
+    tuners = ("swarmpath-cmaes-sigma015", "swarmpath-cmaes-one-finalist", "swarmpath-cmaes-race-base")
+    compare("run", "--out", out, "--tuners", ",".join(tuners), "--seeds", "1", "--threads", "1")
+    config = {t: open(os.path.join(out, "configs", f"{t}-s1.toml")).read() for t in tuners}
+    assert "[optimizer]\nsigma0 = 0.15\n" in config["swarmpath-cmaes-sigma015"]  # tiny_tune has none: added
+    # tiny_tune re-evaluates 1 finalist and the base params on 3 seeds: one finalist of (1 + 1) x 3 / 2
+    assert "[reevaluate]\ntop_k = 1\nseeds = 3\n" in config["swarmpath-cmaes-one-finalist"]
+    assert "race_base = true" in config["swarmpath-cmaes-race-base"]
+    budget = sp.EvolveConfig.load(TINY_TUNE).simulation_budget()["total"]
+    for t in tuners:
+        meta = json.loads(open(os.path.join(out, "runs", f"{t}-s1", "meta.json")).read())
+        assert 0 < meta["simulations"] <= budget, (t, meta)
+    run = json.loads(open(os.path.join(out, "runs", "swarmpath-cmaes-race-base-s1", "evolve", "run.json")).read())
+    assert run["racing"]["against"] == "base params"
+    assert run["racing"]["simulations"] <= 2 * 3
