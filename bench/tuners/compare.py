@@ -391,7 +391,8 @@ def cmd_report(a):
 def plot(rows, order, base):
     """Final fitness per tuner: each tuner seed's pick (dots), the mean and its 95 % interval (bar),
     the base params (dashed line); the wall time per run under each name."""
-    w, h, left, right, top, bottom = 760, 420, 80, 20, 40, 90
+    h, left, right, top, bottom = 420, 80, 20, 40, 90
+    w = max(760, left + right + 190 * len(order))  # room for each name and its figures under it
     values = [v for t in order for v in rows[t]["fitness"]] + [base["fitness"]]
     cis = [mean_ci(rows[t]["fitness"]) for t in order]
     lo = min(values + [m - c for m, c in cis if math.isfinite(c)])
