@@ -64,7 +64,7 @@ const std::array kAdditions{
 
 // additions under trial: registered so that the ablation can measure them, off in the default
 // (docs/detours.md)
-constexpr std::array<std::string_view, 3> kOffInDefault{"spot_on_way", "way_after_edge", "T_leaf"};
+constexpr std::array<std::string_view, 2> kOffInDefault{"spot_on_way", "way_after_edge"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
 constexpr std::array kSpecDefaults{

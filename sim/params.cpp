@@ -153,7 +153,7 @@ const std::array kTable{
   ParamInfo{ 0, "form_retries", R, &P::form_retries, 3, 0, 20, 1, "", "",
             "a forming robot that loses its target (row #7: out of view a visible range away; row #8b: timed out with it out of view) goes home along its own way from the nest (RETURN_TO_NEST), rests and explores again, its next trip starting at its sighting of the chain (site_fidelity), instead of turning RECOVERY, which is final: at most this many times in a run, then RECOVERY (row #7h; 0: RECOVERY at once, as SPEC)",
             "§2.3 #7, #8b", {}},
-  ParamInfo{ 0, "T_leaf", R, &P::t_leaf, 0, 0, 20000, 100, "", "ticks",
+  ParamInfo{ 0, "T_leaf", R, &P::t_leaf, 1500, 0, 20000, 100, "", "ticks",
             "path formation without task allocation: a RED subgoal that no robot in view names as its parent or target (no child, nobody forming from it) for this many ticks in a row, a leaf of the chain that no explorer extends (a side branch of the fan at the goal), leaves the chain and goes home along its own way out (RETURN_TO_NEST); its next trip starts at its sighting of the chain, the RED nearest the nest it saw on its way home, so it comes back to the chain's tip from the nest's side (row #21; 0: never, as SPEC)",
             "§2.3 #21", {}},
   ParamInfo{ 0, "align_keep_view", B, &P::align_keep_view, 1, 0, 1, 1, "", "",

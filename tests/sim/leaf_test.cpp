@@ -52,10 +52,9 @@ Outcome run_fan(const Params& p) {
 // the rule the run ends at T_max with its RED robots in a fan of branches (docs/detours-wall-gap-1-*.svg);
 // with T_leaf the leaves nobody extends leave, come back, and the path forms
 TEST(Leaf, LeavesNobodyExtendsLeaveTheFanAndThePathForms) {
-  Params off;
+  const Params on;  // the default: T_leaf = 1500
+  Params off = on;
   off.t_leaf = 0;
-  Params on = off;
-  on.t_leaf = 1500;
   const Outcome without = run_fan(off);
   const Outcome with = run_fan(on);
   EXPECT_FALSE(without.success);

@@ -470,8 +470,10 @@ TEST(PfTable, Row21ALeafNobodyNamesForTLeafLeavesTheChain) {
   EXPECT_EQ(fire(m, alone, p), "#21");
   EXPECT_EQ(m.state, PfState::kReturnToNest);
   EXPECT_FALSE(m.parent.valid());
+  Params never = p;
+  never.t_leaf = 0;
   for (int i = 0; i < 5; ++i) {
-    EXPECT_EQ(fire(off, alone, Params{}), "");  // the default genome's value aside, Params{}: 0
+    EXPECT_EQ(fire(off, alone, never), "");
     EXPECT_EQ(fire(allocated, alone, p), "");
   }
 }
