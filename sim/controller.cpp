@@ -3,6 +3,7 @@
 
 #include "controllers/diffusion.hpp"
 #include "controllers/path_formation.hpp"
+#include "controllers/sighting_share.hpp"
 
 namespace swarmpath::sim {
 
@@ -25,12 +26,12 @@ std::optional<Mode> parse_mode(std::string_view s) {
   return std::nullopt;
 }
 
-SensorNeeds sensor_needs(Mode m) {
+SensorNeeds sensor_needs(Mode m, const Params& p) {
   switch (m) {
     case Mode::kDiffusion:
       return {.proximity = true, .camera = false, .rab = false};
     case Mode::kPathFormation:
-      return {.proximity = true, .camera = true, .rab = false};
+      return {.proximity = true, .camera = true, .rab = p.share_sighting > 0.0};
     case Mode::kTaskAllocation:
       return {.proximity = true, .camera = true, .rab = true};
   }
@@ -38,7 +39,8 @@ SensorNeeds sensor_needs(Mode m) {
 }
 
 bool robot_listens(Mode m, const Params& p, const RobotMemory& mem) {
-  if (m != Mode::kTaskAllocation) return true;  // the world's needs.rab decides
+  if (m == Mode::kPathFormation) return listens_for_sighting(p, mem.pf);  // share_sighting [R]
+  if (m != Mode::kTaskAllocation) return true;                            // the world's needs.rab decides
   return mem.ta.state == TaState::kScout || mem.ta.state == TaState::kGoalFounder ||
          mem.ta.state == TaState::kDecisionMaker || claims_links(p, mem.pf) ||
          (mem.ta.state == TaState::kRestingTask && p.rest_recruit && p.recruit_call);

@@ -49,10 +49,12 @@ struct RobotMemory {
   Trail trail;                      ///< breadcrumbs of the current exploration trip
 };
 
-SensorNeeds sensor_needs(Mode m);
+/// Which sensors mode `m` reads (path formation the medium only with share_sighting).
+SensorNeeds sensor_needs(Mode m, const Params& p);
 
 /// Whether one robot listens to the range-and-bearing medium in its current state, when the world
-/// senses it at all: in task allocation, only scouts, founders and decision makers do.
+/// senses it at all: in task allocation, only scouts, founders and decision makers do; in path
+/// formation, resting robots without a sighting (share_sighting).
 bool robot_listens(Mode m, const Params& p, const RobotMemory& mem);
 
 /// The kinds of message (RabKinds bits) a payload broadcast in mode `m` carries: the medium delivers

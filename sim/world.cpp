@@ -123,7 +123,7 @@ World make_world(const Scenario& s, const Params& p, Mode mode, std::uint64_t se
   layout.nx = s.sim.physics_regions_x;
   layout.ny = s.sim.physics_regions_y;
   w.physics = std::make_unique<Physics>(w.shapes, layout);
-  w.needs = sensor_needs(mode);
+  w.needs = sensor_needs(mode, p);
   const Aabb bounds = grid_bounds(s);
   const double cell = s.sim.grid_cell;
   w.touch_bins = ShapeBins(w.shapes, bounds, cell, kRobotRadius + kProximityRange);

@@ -9,6 +9,7 @@
 #include "exploring.hpp"
 #include "forming.hpp"
 #include "navigation.hpp"
+#include "sighting_share.hpp"
 #include "sim/controller.hpp"
 #include "sim/motion.hpp"
 #include "transition_table.hpp"
@@ -203,6 +204,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   PfMemory& m = mem.pf;
   PfSight sight;
   pf_perceive(in, p, mem.nest, m, sight);
+  if (listens_for_sighting(p, m)) hear_sighting(in.rab, mem.nest, m);  // share_sighting [R]
   if (m.state == PfState::kSubgoalForming) next_form_leg(in, p, m);
   sight.may_form = !p.form_one_at_a_time || m.state != PfState::kExploring || sight.lure == nullptr ||
                    mem.rng.bernoulli(p.p_form);
@@ -213,6 +215,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   mem.state = static_cast<std::uint8_t>(m.state);
   Command cmd = act(in, p, mem, sight);
   advertise_links(in, p, m, cmd);
+  if (tells_sighting(p, m, sight.nest_distance_cm)) tell_sighting(in.id, mem.nest, m, cmd);
   return cmd;
 }
 

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: MIT
+// share_sighting [R] (path formation without task allocation): robots at the nest tell each other
+// where they last saw the goal or the chain, over the range-and-bearing medium, as task
+// allocation's founder tells its allocated robots where it saw the goal (share_goal, SPEC §2.6 T5).
+// A resting robot without a sighting of its own takes the one it hears, and its next trip starts
+// toward it (site_fidelity); a trip that sees nothing there forgets it on the way home.
+#pragma once
+
+#include "pf_memory.hpp"
+#include "sim/params.hpp"
+#include "sim/percept.hpp"
+
+namespace swarmpath::sim {
+
+/// A robot of path formation without task allocation that knows a sighting tells it while it is
+/// within share_sighting of the nest (`nest_distance_cm` from the positioning sensor).
+bool tells_sighting(const Params& p, const PfMemory& m, double nest_distance_cm);
+
+/// A resting robot of path formation without task allocation with no sighting of its own listens.
+bool listens_for_sighting(const Params& p, const PfMemory& m);
+
+/// The message telling `m.sighting` (relative to the nest, in cm) from robot `id`, into `cmd`.
+void tell_sighting(int id, Vec2 nest, const PfMemory& m, Command& cmd);
+
+/// The sighting told by the nearest robot heard (ties: the smaller id) becomes this robot's own
+/// (not seen on this trip, so that a trip that finds nothing there forgets it); false when none.
+bool hear_sighting(std::span<const RabMessage> inbox, Vec2 nest, PfMemory& m);
+
+}  // namespace swarmpath::sim
