@@ -106,6 +106,7 @@ struct Params {
   bool link_outward = false;     ///< rows #5, #6b on its trail: stop if the target is the nearest chain light
   double form_retries = 3;       ///< rows #7, #8b: a robot losing its target goes home, this often
   double t_leaf = 1500;          ///< row #21: a RED leaf nobody names this long goes home [ticks]
+  bool leaf_in_fan = false;      ///< row #21: T_leaf counts only while another branch is in view
   double share_sighting = 0;  ///< pf: robots this near the nest tell where they saw the chain [cm] (0: off)
   // aligning (SPEC §2.4, rows #10-#13) and the chain's links
   bool align_keep_view = true;        ///< rows #10, #13: an aligning robot keeps both references in view

@@ -105,6 +105,17 @@ bool leaf_unextended(const PfContext& c) {
   return c.p.t_leaf > 0.0 && static_cast<double>(c.m.childless) >= c.p.t_leaf;
 }
 
+bool sees_another_branch(const Percept& in, const PfMemory& m) {
+  int grandparent = kNobody;
+  for (const Blob& b : in.blobs)
+    if (b.emitter == m.parent.id) grandparent = b.tag;
+  for (const Blob& b : in.blobs) {
+    if (b.emitter < 0 || !is_path_colour(b.color) || b.color == Led::kOrange) continue;
+    if (b.emitter != m.parent.id && b.emitter != grandparent) return true;
+  }
+  return false;
+}
+
 // row 16 [R]: back to the nest along its way out, then out again to the sighting, the RED robot
 // nearest the nest that it saw (pf_perceive): its next approach to the tip is from the nest side
 void leave_chain(const PfContext&, PfMemory& m) {

@@ -51,6 +51,10 @@ const Blob* free_subgoal_in_view(const Percept& in);
 /// chain_bypass [R]: the parent's parent in view (row #15) and whether this subgoal was skipped (#16).
 void perceive_bypass(const Percept& in, const Params& p, PfMemory& m, const Claims& claims, PfSight& sight);
 
+/// leaf_in_fan [R] (row #21): a chain light in view that is neither the parent nor the parent's parent
+/// (the tag the parent's light carries): another branch, so this subgoal stands in a fan.
+bool sees_another_branch(const Percept& in, const PfMemory& m);
+
 /// relink_recovery [R]: the parent turned RECOVERY; its own parent, the tag its light carries, in view.
 void perceive_heir(const Percept& in, const PfMemory& m, PfSight& sight);
 

@@ -229,7 +229,11 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   if (p.t_leaf > 0.0 && m.state == PfState::kSubgoal && m.role == PfRole::kSwarm) {
     bool named = false;
     for_each_naming(in, [&](int, int n) { named = named || n == in.id; });
-    m.childless = named ? 0 : m.childless + 1;
+    if (named) {
+      m.childless = 0;
+    } else if (!p.leaf_in_fan || sees_another_branch(in, m)) {
+      ++m.childless;
+    }
   } else {
     m.childless = 0;
   }

@@ -478,6 +478,33 @@ TEST(PfTable, Row21ALeafNobodyNamesForTLeafLeavesTheChain) {
   }
 }
 
+// leaf_in_fan [R] (row #21): the lone tip of a single chain sees only its own links and stays; a leaf
+// that also sees another branch's light counts its unnamed ticks
+TEST(PfTable, Row21WithLeafInFanOnlyALeafThatSeesAnotherBranchLeaves) {
+  Params p;
+  p.t_leaf = 3;
+  p.leaf_in_fan = true;
+  PfMemory tip_memory = in_state(PfState::kSubgoal);
+  tip_memory.parent = tracked(5, {0.7, 0.0});
+  PfMemory m = tip_memory;
+  Reading tip;
+  tip.add(Led::kRed, 5, 0, 70, 2);   // my parent, whose light names robot 2
+  tip.add(Led::kRed, 2, 10, 95, 1);  // my parent's parent: still my own chain
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(fire(m, tip, p), "");
+  EXPECT_EQ(m.childless, 0);
+  Reading fan = tip;
+  fan.add(Led::kRed, 9, 90, 60, 2);  // another branch from robot 2
+  EXPECT_EQ(fire(m, fan, p), "");
+  EXPECT_EQ(fire(m, fan, p), "");
+  EXPECT_EQ(fire(m, fan, p), "#21");
+  Params plain = p;
+  plain.leaf_in_fan = false;
+  PfMemory lone = tip_memory;
+  EXPECT_EQ(fire(lone, tip, plain), "");
+  EXPECT_EQ(fire(lone, tip, plain), "");
+  EXPECT_EQ(fire(lone, tip, plain), "#21");
+}
+
 TEST(PfTable, Row9aSubgoalSeesTheNest) {  // label g
   PfMemory m = in_state(PfState::kSubgoal);
   m.parent = tracked(7, {0.7, 0.0});
