@@ -215,7 +215,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   mem.state = static_cast<std::uint8_t>(m.state);
   Command cmd = act(in, p, mem, sight);
   advertise_links(in, p, m, cmd);
-  if (tells_sighting(p, m, sight.nest_distance_cm)) tell_sighting(in.id, mem.nest, m, cmd);
+  if (tells_sighting(p, m, sight.nest_distance_cm, in.tick)) tell_sighting(in.id, mem.nest, m, cmd);
   return cmd;
 }
 

@@ -27,9 +27,9 @@ std::int32_t get_i32(const RabPayload& b, std::size_t at) {
 
 }  // namespace
 
-bool tells_sighting(const Params& p, const PfMemory& m, double nest_distance_cm) {
-  return p.share_sighting > 0.0 && m.role == PfRole::kSwarm && m.has_sighting &&
-         nest_distance_cm <= p.share_sighting &&
+bool tells_sighting(const Params& p, const PfMemory& m, double nest_distance_cm, std::int64_t tick) {
+  return p.share_sighting > 0.0 && static_cast<double>(tick) >= p.share_after && m.role == PfRole::kSwarm &&
+         m.has_sighting && nest_distance_cm <= p.share_sighting &&
          (m.state == PfState::kResting || m.state == PfState::kReturnToNest ||
           m.state == PfState::kExploring);
 }

@@ -6,6 +6,8 @@
 // toward it (site_fidelity); a trip that sees nothing there forgets it on the way home.
 #pragma once
 
+#include <cstdint>
+
 #include "pf_memory.hpp"
 #include "sim/params.hpp"
 #include "sim/percept.hpp"
@@ -13,8 +15,9 @@
 namespace swarmpath::sim {
 
 /// A robot of path formation without task allocation that knows a sighting tells it while it is
-/// within share_sighting of the nest (`nest_distance_cm` from the positioning sensor).
-bool tells_sighting(const Params& p, const PfMemory& m, double nest_distance_cm);
+/// within share_sighting of the nest (`nest_distance_cm` from the positioning sensor), from tick
+/// share_after of the run on.
+bool tells_sighting(const Params& p, const PfMemory& m, double nest_distance_cm, std::int64_t tick);
 
 /// A resting robot of path formation without task allocation with no sighting of its own listens.
 bool listens_for_sighting(const Params& p, const PfMemory& m);
