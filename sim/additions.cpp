@@ -24,6 +24,7 @@ const std::array kAdditions{
   Addition{"return_finds", "a robot going home takes the goal it finds", "§2.3 #1h, §2.6 T2", kBoth, {{{"return_finds", 0}}}, {}},
   Addition{"leaf_in_fan", "T_leaf counts only while another branch is in view", "§2.3 #21", kBoth, {{{"leaf_in_fan", 0}}}, {"T_leaf"}},
   Addition{"share_sighting", "robots at the nest tell each other where they saw the chain", "§2.3 #2, #4", kBoth, {{{"share_sighting", 0}}}, {"site_fidelity"}},
+  Addition{"route_to_sighting", "a trip to the sighting retraces the way it was seen from", "§2.3 #2", kBoth, {{{"route_to_sighting", 0}}}, {"site_fidelity", "T_trap"}},
   Addition{"return_lured", "a scout going home turns to the goal it sees", "§2.6 T2", kTa, {{{"return_lured", 0}}}, {"return_finds"}},
   // going home along the breadcrumbs
   Addition{"trail_home", "a robot going home that the field traps retraces its trail", "§2.1 fields, #3", kBoth, {{{"trail_home", 0}}}, {"T_trap"}},
@@ -66,7 +67,8 @@ const std::array kAdditions{
 
 // additions under trial: registered so that the ablation can measure them, off in the default
 // (docs/detours.md)
-constexpr std::array<std::string_view, 4> kOffInDefault{"spot_on_way", "way_after_edge", "share_sighting", "leaf_in_fan"};
+constexpr std::array<std::string_view, 5> kOffInDefault{"spot_on_way", "way_after_edge", "share_sighting", "leaf_in_fan",
+                                                        "route_to_sighting"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
 constexpr std::array kSpecDefaults{

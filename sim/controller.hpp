@@ -10,6 +10,7 @@
 
 #include "controllers/navigation.hpp"
 #include "controllers/path_formation.hpp"
+#include "controllers/route.hpp"
 #include "controllers/task_allocation.hpp"
 #include "drive.hpp"
 #include "motion.hpp"
@@ -47,6 +48,7 @@ struct RobotMemory {
   int swarm = 0;                    ///< N, the robots deployed
   NavMemory nav;                    ///< going to a point (nest, deployment point)
   Trail trail;                      ///< breadcrumbs of the current exploration trip
+  Route route;                      ///< route_to_sighting: the crumbs of the trip that saw the sighting
 };
 
 /// Which sensors mode `m` reads (path formation the medium only with share_sighting).

@@ -8,6 +8,7 @@
 #include "path_formation.hpp"
 #include "sim/controller.hpp"
 #include "sim/motion.hpp"
+#include "units.hpp"
 
 namespace swarmpath::sim {
 
@@ -123,7 +124,21 @@ bool travel_to_sighting(const Percept& in, const Params& p, RobotMemory& mem, co
     nav_reset(mem.nav);
     return false;
   }
-  const Vec2 f = nav_toward(in, p, mem.nav, mem.rng, m.sighting, in_crowd);
+  Vec2 f;
+  if (p.route_to_sighting && mem.route.begun_for(m.trip_start, m.sighting)) {
+    f = nav_route(in, p, mem.nav, mem.rng, mem.route, m.sighting, in_crowd);
+  } else {
+    f = nav_toward(in, p, mem.nav, mem.rng, m.sighting, in_crowd);
+    // R (route_to_sighting): trapped by the field (edge following begins), along the way of the trip
+    // that saw the sighting, if that way passed within R_vis of it, from where the robot can be on it
+    if (p.route_to_sighting && mem.nav.following > 0) {
+      mem.route.set_trip(m.trip_start, m.sighting);
+      if (mem.route.begin(in.pose.p, m.sighting, p.r_vis * kCm, dist(in.pose.p, mem.nest))) {
+        nav_reset(mem.nav);
+        f = nav_route(in, p, mem.nav, mem.rng, mem.route, m.sighting, in_crowd);
+      }
+    }
+  }
   const Vec2 v = with_avoidance(in, p, mem.nav, f) + sight.repulsion;
   if (m.explore_leg != ExploreLeg::kLead) {
     cmd = pf_drive(p, mem, p.v_max * v, PfState::kExploring);

@@ -159,6 +159,24 @@ Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Ve
   return field;
 }
 
+Vec2 nav_route(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Route& route, Vec2 to,
+               bool crowded) {
+  if (route.walking() && trapped(nav, p, p.t_trap)) {
+    route.skip();
+    restart_progress(nav);
+  }
+  const bool was_walking = route.walking();
+  Vec2 crumb;
+  if (!route.next(in.pose.p, crumb)) {
+    if (was_walking) restart_progress(nav);  // the last leg: to the point itself
+    return nav_toward(in, p, nav, rng, to, crowded);
+  }
+  const Vec2 field = field_toward(in.pose, crumb);
+  if (nav_update(nav, p, rng, -kCmPerM * route.remaining(in.pose.p), in, field, crowded))
+    return follow_edge(in, nav.side);
+  return field;
+}
+
 Vec2 with_avoidance(const Percept& in, const Params& p, const NavMemory& nav, Vec2 f) {
   return (nav.following > 0 ? Vec2{} : diffusion(in.proximity, p).direction) + f;
 }

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 
+#include "route.hpp"
 #include "sim/params.hpp"
 #include "sim/percept.hpp"
 #include "sim/rng.hpp"
@@ -66,6 +67,12 @@ Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Ve
 Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest,
               double trap_ticks = -1.0, const Vec2* field_point = nullptr,
               double trail_within = Trail::kEverywhere);
+
+/// Toward `to` along `route` [R route_to_sighting]: crumb after crumb, progress measured along the way
+/// left (as nav_home's trail), a crumb it cannot reach passed over after T_trap ticks without progress;
+/// once the way is walked (or when there is none), nav_toward(`to`).
+Vec2 nav_route(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Route& route, Vec2 to,
+               bool crowded = false);
 
 /// A navigating robot's heading (robot frame): the navigator's direction `f` plus the proximity ring's
 /// avoidance (diffusion), which edge following leaves out, since it keeps to the edge itself.

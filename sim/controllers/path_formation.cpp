@@ -146,6 +146,8 @@ void enter(const Percept& in, const Params& p, RobotMemory& mem, PfState to) {
   m.answering = -1;
   m.explore_leg = ExploreLeg::kWalk;
   if (to == PfState::kReturnToNest && !m.sighted_this_trip) m.has_sighting = false;  // a stale lead
+  // R (route_to_sighting): the way out of a trip that saw the chain, for the next trip to it
+  if (p.route_to_sighting && to == PfState::kReturnToNest && m.has_sighting) mem.route.keep(mem.trail);
   if (to == PfState::kExploring) {
     // a new trip: head for the last sighting (site fidelity), else keep the random heading
     m.sighted_this_trip = false;

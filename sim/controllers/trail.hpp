@@ -71,6 +71,9 @@ class Trail {
 
   int size() const { return count_; }
 
+  /// Crumb `i` (0: where the trip began) of the crumbs left.
+  Vec2 crumb(int i) const { return crumbs_[static_cast<std::size_t>(i)]; }
+
  private:
   void thin();
 

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "sim/controllers/trail.hpp"
 #include "sim/scenario.hpp"
 
 namespace swarmpath::test {
@@ -22,6 +23,13 @@ inline std::string small_arena_toml(const std::string& extra = "", int robots = 
          "[arena]\nsize = [6.0, 4.0]\n\n"
          "[deployment]\nsize = [1.0, 1.0]\nrobots = " +
          std::to_string(robots) + "\n" + extra;
+}
+
+/// Walks trail `t` from `from` to `to` in 1 cm steps.
+inline void walk(sim::Trail& t, sim::Vec2 from, sim::Vec2 to) {
+  const double len = dist(from, to);
+  const int steps = static_cast<int>(len / 0.01);
+  for (int k = 1; k <= steps; ++k) t.record(from + (static_cast<double>(k) / steps) * (to - from));
 }
 
 inline sim::Scenario small_arena(const std::string& extra = "", int robots = 10) {

@@ -9,15 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 namespace swarmpath::sim {
 namespace {
 
-// walks the trail from `from` to `to` in 1 cm steps
-void walk(Trail& t, Vec2 from, Vec2 to) {
-  const double len = dist(from, to);
-  const int steps = static_cast<int>(len / 0.01);
-  for (int k = 1; k <= steps; ++k) t.record(from + (static_cast<double>(k) / steps) * (to - from));
-}
+using test::walk;
 
 // the first crumb on the way home from `p`
 Vec2 first_crumb(Trail& t, Vec2 p) {
