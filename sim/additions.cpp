@@ -67,7 +67,7 @@ const std::array kAdditions{
 
 // additions under trial: registered so that the ablation can measure them, off in the default
 // (docs/detours.md)
-constexpr std::array<std::string_view, 5> kOffInDefault{"spot_on_way", "way_after_edge", "share_sighting", "leaf_in_fan",
+constexpr std::array<std::string_view, 4> kOffInDefault{"spot_on_way", "way_after_edge", "leaf_in_fan",
                                                         "route_to_sighting"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)

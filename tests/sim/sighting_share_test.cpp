@@ -19,6 +19,7 @@ namespace {
 TEST(SightingShare, ATellingCarriesTheSightingToARestingRobotWithoutOne) {
   Params p;
   p.share_sighting = 300;
+  p.share_after = 0;  // from the start of the run
   const Vec2 nest{-7.0, 0.5};
   PfMemory teller;
   teller.state = PfState::kResting;
@@ -89,6 +90,7 @@ TEST(SightingShare, ToldRobotsLayTheChainThroughASerpentineSooner) {
   off.t_leaf = 0;  // as measured (beside T_leaf = 1500 the same seeds give 112 -> 146)
   Params on = off;
   on.share_sighting = 300;
+  on.share_after = 0;  // from the start of the run
   expect_told_robots_lay_more_links(off, on);
 }
 
@@ -103,6 +105,7 @@ TEST(SightingShare, TellingFromShareAfterLeavesAQuickSearchAsItWasAndHelpsASlowO
   off.share_sighting = 0;
   Params from_start = off;
   from_start.share_sighting = 300;
+  from_start.share_after = 0;
   Params late = from_start;
   late.share_after = 2000;
   const Metrics a = run(off, quick, Mode::kPathFormation, 1, [](const World&) { return false; });
