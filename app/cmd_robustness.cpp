@@ -20,6 +20,7 @@
 #include "robustness.hpp"
 #include "robustness_output.hpp"
 #include "sim/config_error.hpp"
+#include "sim/controller.hpp"
 
 namespace swarmpath::app {
 
@@ -90,20 +91,23 @@ int run_robustness(const RobustnessOptions& o, const evolve::EvaluatorFactory& e
   const std::vector<double> astar8 = astar8_lengths(base);
   const std::vector<Variant> variants = make_variants(base.size(), o.grid);
   const std::vector<sim::Scenario> cases = variant_scenarios(base, variants, o.grid);
-  const std::vector<GridCase> grid = robustness_cases(variants, o.robots, modes, o.seeds, o.seed_base);
+  RobustnessGrid sweep = o.grid;
+  sweep.pf_radio = sim::sensor_needs(sim::Mode::kPathFormation, p).rab;  // share_sighting
+  const std::vector<GridCase> grid =
+      robustness_cases(variants, o.robots, modes, o.seeds, o.seed_base, sweep.pf_radio);
 
   const std::unique_ptr<evolve::BatchEvaluator> evaluator = evaluators(threads);
   const bool tty = stderr_is_terminal();
   const Stopwatch clock;
   err << "swarmpath robustness: " << base.size() << " scenarios x " << o.robots.size() << " robot counts x "
       << o.grid.fail_fractions.size() << " failure fractions x " << o.grid.packet_losses.size()
-      << " packet losses (task allocation only) x " << o.seeds << " seeds = " << grid.size() << " runs, mode "
-      << o.mode << ", " << evaluator->describe() << "\n";
+      << (sweep.pf_radio ? " packet losses x " : " packet losses (task allocation only) x ") << o.seeds
+      << " seeds = " << grid.size() << " runs, mode " << o.mode << ", " << evaluator->describe() << "\n";
   const std::vector<GridRun> runs = run_grid(cases, grid, p, *evaluator, grid_progress(err, tty));
   if (tty) err << "\n";
   err << "  done in " << fixed(clock.seconds(), 1) << " s: " << evaluator->summary() << "\n";
 
-  const RobustnessReport report = summarise_robustness(base, astar8, variants, o.grid, modes, runs, group_of);
+  const RobustnessReport report = summarise_robustness(base, astar8, variants, sweep, modes, runs, group_of);
   std::ostringstream md;
   const sim::FaultModel& f = base[0].faults;
   std::string robots;
@@ -165,8 +169,8 @@ Runner add_robustness(CLI::App& app, const evolve::EvaluatorFactory& evaluators)
       ->delimiter(',')
       ->capture_default_str();
   app.add_option("--packet-loss", o->grid.packet_losses,
-                 "Range-and-bearing packet losses, increasing, e.g. 0,0.1,0.3 (task allocation only: path "
-                 "formation uses no radio, its runs stand for every loss)")
+                 "Range-and-bearing packet losses, increasing, e.g. 0,0.1,0.3 (path formation without "
+                 "share_sighting uses no radio: its runs stand for every loss)")
       ->delimiter(',')
       ->capture_default_str();
   add_fault_options(app, o->faults, /*sweep=*/true);

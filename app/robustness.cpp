@@ -89,14 +89,19 @@ std::vector<sim::Scenario> variant_scenarios(const std::vector<sim::Scenario>& b
   return out;
 }
 
+bool uses_radio(sim::Mode m, const RobustnessGrid& g) {
+  return m == sim::Mode::kTaskAllocation || g.pf_radio;
+}
+
 std::vector<GridCase> robustness_cases(const std::vector<Variant>& variants, const std::vector<int>& robots,
                                        const std::vector<sim::Mode>& modes, int seeds,
-                                       std::uint64_t seed_base) {
+                                       std::uint64_t seed_base, bool pf_radio) {
+  const RobustnessGrid radio{{}, {}, pf_radio};
   std::vector<GridCase> grid;
   for (std::size_t v = 0; v < variants.size(); ++v) {
     for (const int n : robots) {
       for (const sim::Mode mode : modes) {
-        if (mode != sim::Mode::kTaskAllocation && variants[v].loss > 0) continue;  // no radio
+        if (!uses_radio(mode, radio) && variants[v].loss > 0) continue;  // stands for every loss
         for (int k = 0; k < seeds; ++k)
           grid.push_back({v, n, mode, seed_base + static_cast<std::uint64_t>(k)});
       }
@@ -141,8 +146,8 @@ RobustnessReport summarise_robustness(const std::vector<sim::Scenario>& base,
     const Variant& v = variants[run.c.scenario];
     for (std::size_t m = 0; m < modes.size(); ++m) {
       if (modes[m] != run.c.mode) continue;
-      // a path-formation run stands for every packet loss
-      const bool radio = run.c.mode == sim::Mode::kTaskAllocation;
+      // a run of a mode without radio stands for every packet loss
+      const bool radio = uses_radio(run.c.mode, g);
       for (std::size_t l = 0; l < nl; ++l) {
         if (radio ? l == v.loss : v.loss == 0)
           sums[index(m, v.scenario, v.fail, l)].add(run.m, astar8_tu[v.scenario]);

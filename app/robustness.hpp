@@ -17,7 +17,12 @@ namespace swarmpath::app {
 struct RobustnessGrid {
   std::vector<double> fail_fractions{0.0, 0.05, 0.1, 0.2};
   std::vector<double> packet_losses{0.0, 0.1, 0.3};
+  bool pf_radio = false;  ///< path formation listens to the medium too (share_sighting > 0)
 };
+
+/// Whether runs of mode `m` depend on the packet loss: task allocation's always, path
+/// formation's only with share_sighting (g.pf_radio).
+bool uses_radio(sim::Mode m, const RobustnessGrid& g);
 
 /// One scenario under one condition (what run_grid simulates).
 struct Variant {
@@ -33,11 +38,12 @@ std::vector<sim::Scenario> variant_scenarios(const std::vector<sim::Scenario>& b
                                              const std::vector<Variant>& variants, const RobustnessGrid& g);
 
 /// Every (variant, robots, mode, seed), the same seeds in every variant (paired runs). Path
-/// formation never listens to the medium (its runs are bit-identical under any packet loss), so
-/// it is run at the first packet loss only and stands for the others.
+/// formation without share_sighting never listens to the medium (its runs are bit-identical under
+/// any packet loss), so it is run at the first packet loss only and stands for the others; with
+/// it (pf_radio) it is run at every packet loss.
 std::vector<GridCase> robustness_cases(const std::vector<Variant>& variants, const std::vector<int>& robots,
                                        const std::vector<sim::Mode>& modes, int seeds,
-                                       std::uint64_t seed_base);
+                                       std::uint64_t seed_base, bool pf_radio = false);
 
 /// Means over the runs of one (mode, failure fraction, packet loss), over all scenarios or one.
 struct RobustnessCell {

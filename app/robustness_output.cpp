@@ -25,7 +25,7 @@ std::string pct(double fraction) { return fixed(100.0 * fraction, 0) + " %"; }
 
 std::string mode_name(sim::Mode m) { return std::string(sim::to_string(m)); }
 
-bool radio(sim::Mode m) { return m == sim::Mode::kTaskAllocation; }
+bool ta(sim::Mode m) { return m == sim::Mode::kTaskAllocation; }
 
 std::optional<std::size_t> index_of(const std::vector<double>& v, double x) {
   for (std::size_t i = 0; i < v.size(); ++i) {
@@ -36,14 +36,14 @@ std::optional<std::size_t> index_of(const std::vector<double>& v, double x) {
 
 // the rows of a mode: one per packet loss with task allocation; one (any loss) without
 std::vector<std::size_t> loss_rows(const RobustnessReport& r, sim::Mode m) {
-  if (!radio(m)) return {0};
+  if (!uses_radio(m, r.grid)) return {0};
   std::vector<std::size_t> rows(r.grid.packet_losses.size());
   for (std::size_t l = 0; l < rows.size(); ++l) rows[l] = l;
   return rows;
 }
 
 std::string loss_label(const RobustnessReport& r, sim::Mode m, std::size_t l) {
-  return radio(m) ? pct(r.grid.packet_losses[l]) : std::string("any (no radio)");
+  return uses_radio(m, r.grid) ? pct(r.grid.packet_losses[l]) : std::string("any (no radio)");
 }
 
 template <typename F>
@@ -114,11 +114,12 @@ void write_robustness_markdown(std::ostream& out, const RobustnessReport& r) {
   for (std::size_t l = 0; l < r.grid.packet_losses.size(); ++l) {
     std::vector<sim::Mode> shown;
     for (const sim::Mode m : r.modes) {
-      if (l == 0 || radio(m)) shown.push_back(m);
+      if (l == 0 || uses_radio(m, r.grid)) shown.push_back(m);
     }
     if (shown.empty()) continue;
     out << "### Success per scenario (%), packet loss " << pct(r.grid.packet_losses[l])
-        << (l == 0 ? "" : " (task allocation only: path formation uses no radio)") << "\n\n| scenario |";
+        << (l == 0 || r.grid.pf_radio ? "" : " (task allocation only: path formation uses no radio)")
+        << "\n\n| scenario |";
     for (const sim::Mode m : shown) {
       for (const double f : r.grid.fail_fractions) out << " " << mode_name(m) << " " << pct(f) << " |";
     }
@@ -144,7 +145,7 @@ void write_robustness_markdown(std::ostream& out, const RobustnessReport& r) {
   for (const std::string& g : over) {
     for (const sim::Mode m : r.modes) {
       if (const auto drop = success_drop_at_10pct(r, m, g)) {
-        out << "- " << (g.empty() ? "" : g + ", ") << (radio(m) ? "with" : "without")
+        out << "- " << (g.empty() ? "" : g + ", ") << (ta(m) ? "with" : "without")
             << " task allocation, 10 % of the robots failing: success "
             << (*drop >= 0 ? "drops by " : "rises by ") << fixed(std::fabs(*drop), 1)
             << " points (target: at most 10): " << (*drop <= 10.0 ? "met" : "missed") << "\n";
@@ -162,7 +163,8 @@ nlohmann::ordered_json robustness_json(const RobustnessReport& r, const std::vec
     if (!c.scenario.empty()) o["scenario"] = c.scenario;
     o["mode"] = mode_name(c.mode);
     o["fail_fraction"] = r.grid.fail_fractions[c.fail];
-    o["packet_loss"] = radio(c.mode) ? nlohmann::json(r.grid.packet_losses[c.loss]) : nlohmann::json("any");
+    o["packet_loss"] =
+        uses_radio(c.mode, r.grid) ? nlohmann::json(r.grid.packet_losses[c.loss]) : nlohmann::json("any");
     o["runs"] = c.runs;
     o["successes"] = c.successes;
     o["success_pct"] = number_or_null(c.success_pct);
@@ -170,12 +172,13 @@ nlohmann::ordered_json robustness_json(const RobustnessReport& r, const std::vec
     o["ratio_to_astar"] = number_or_null(c.ratio_to_astar);
     o["failures"] = number_or_null(c.failures);
     o["chain_failures"] = number_or_null(c.chain_failures);
-    if (radio(c.mode)) o["allocated"] = number_or_null(c.allocated);
+    if (ta(c.mode)) o["allocated"] = number_or_null(c.allocated);
     return o;
   };
   nlohmann::ordered_json j;
   j["fail_fractions"] = r.grid.fail_fractions;
   j["packet_losses"] = r.grid.packet_losses;
+  j["path_formation_uses_radio"] = r.grid.pf_radio;
   nlohmann::ordered_json modes = nlohmann::ordered_json::array();
   for (const sim::Mode m : r.modes) modes.push_back(mode_name(m));
   j["modes"] = modes;
@@ -186,20 +189,20 @@ nlohmann::ordered_json robustness_json(const RobustnessReport& r, const std::vec
   nlohmann::ordered_json cells = nlohmann::ordered_json::array();
   for (std::size_t m = 0; m < r.modes.size(); ++m) {
     for (const RobustnessCell& c : r.overall) {
-      if (c.mode == r.modes[m] && (radio(c.mode) || c.loss == 0)) cells.push_back(cell_json(c));
+      if (c.mode == r.modes[m] && (uses_radio(c.mode, r.grid) || c.loss == 0)) cells.push_back(cell_json(c));
     }
   }
   j["cells"] = cells;
   nlohmann::ordered_json per = nlohmann::ordered_json::array();
   for (const RobustnessCell& c : r.per_scenario) {
-    if (radio(c.mode) || c.loss == 0) per.push_back(cell_json(c));
+    if (uses_radio(c.mode, r.grid) || c.loss == 0) per.push_back(cell_json(c));
   }
   j["scenario_cells"] = per;
   if (!r.per_group.empty()) {
     j["groups"] = r.groups;
     nlohmann::ordered_json groups = nlohmann::ordered_json::array();
     for (const RobustnessCell& c : r.per_group) {
-      if (radio(c.mode) || c.loss == 0) groups.push_back(cell_json(c));
+      if (uses_radio(c.mode, r.grid) || c.loss == 0) groups.push_back(cell_json(c));
     }
     j["group_cells"] = groups;
   }
@@ -221,7 +224,7 @@ nlohmann::ordered_json robustness_json(const RobustnessReport& r, const std::vec
     o["mode"] = mode_name(run.c.mode);
     o["fail_fraction"] = r.grid.fail_fractions[v.fail];
     o["packet_loss"] =
-        radio(run.c.mode) ? nlohmann::json(r.grid.packet_losses[v.loss]) : nlohmann::json("any");
+        uses_radio(run.c.mode, r.grid) ? nlohmann::json(r.grid.packet_losses[v.loss]) : nlohmann::json("any");
     o["success"] = m.success;
     o["ticks"] = m.ticks;
     o["ticks_to_form"] = m.ticks_to_form < 0 ? nlohmann::json(nullptr) : nlohmann::json(m.ticks_to_form);
@@ -229,7 +232,7 @@ nlohmann::ordered_json robustness_json(const RobustnessReport& r, const std::vec
     o["astar8_tu"] = astar8_tu[v.scenario];
     o["failures"] = m.failures;
     o["chain_failures"] = m.chain_failures;
-    if (radio(run.c.mode)) o["allocated"] = m.allocated;
+    if (ta(run.c.mode)) o["allocated"] = m.allocated;
     o["state_hash"] = sim::to_hex(m.state_hash);
     rs.push_back(o);
   }
@@ -254,7 +257,9 @@ void write_robustness_svg(std::ostream& out, const RobustnessReport& r, const st
   // one line per (mode, packet loss): path formation black; task allocation blue, orange, red, ...
   static const char* kLossColours[] = {"#1f4fff", "#ff8c00", "#d62728", "#9b30d0", "#2ca02c"};
   const auto colour = [&](sim::Mode m, std::size_t l) {
-    return radio(m) ? std::string(kLossColours[l % 5]) : std::string("#222222");
+    if (ta(m)) return std::string(kLossColours[l % 5]);
+    static const char* kGreys[] = {"#222222", "#666666", "#999999", "#bbbbbb", "#dddddd"};
+    return std::string(kGreys[l % 5]);
   };
 
   struct Measure {
@@ -282,7 +287,7 @@ void write_robustness_svg(std::ostream& out, const RobustnessReport& r, const st
     for (const sim::Mode m : r.modes) {
       for (const std::size_t l : loss_rows(r, m)) {
         out << "<polyline fill=\"none\" stroke=\"" << colour(m, l) << "\" stroke-width=\"2\""
-            << (radio(m) ? "" : " stroke-dasharray=\"6 3\"") << " points=\"";
+            << (ta(m) ? "" : " stroke-dasharray=\"6 3\"") << " points=\"";
         for (std::size_t f = 0; f < xs.size(); ++f) {
           const double y = measures[k].get(r.at(m, f, l));
           if (!std::isnan(y)) out << a.px(xs[f]) << ',' << a.py(y) << ' ';
@@ -300,12 +305,12 @@ void write_robustness_svg(std::ostream& out, const RobustnessReport& r, const st
   double ly = top + panel_h + 56.0;
   for (const sim::Mode m : r.modes) {
     for (const std::size_t l : loss_rows(r, m)) {
-      const std::string label =
-          std::string(radio(m) ? "with task allocation, packet loss " : "without task allocation, ") +
-          (radio(m) ? pct(r.grid.packet_losses[l]) : "any packet loss (no radio)");
+      const std::string label = std::string(ta(m) ? "with task allocation" : "without task allocation") +
+                                (uses_radio(m, r.grid) ? ", packet loss " + pct(r.grid.packet_losses[l])
+                                                       : ", any packet loss (no radio)");
       out << "<line x1=\"" << left << "\" y1=\"" << ly - 4 << "\" x2=\"" << left + 30 << "\" y2=\"" << ly - 4
           << "\" stroke=\"" << colour(m, l) << "\" stroke-width=\"3\""
-          << (radio(m) ? "" : " stroke-dasharray=\"6 3\"") << "/><text x=\"" << left + 38 << "\" y=\"" << ly
+          << (ta(m) ? "" : " stroke-dasharray=\"6 3\"") << "/><text x=\"" << left + 38 << "\" y=\"" << ly
           << "\" font-size=\"12\">" << evolve::xml_escape(label) << "</text>\n";
       ly += 18.0;
     }

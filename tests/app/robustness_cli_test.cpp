@@ -99,14 +99,17 @@ TEST(FaultCli, RobustnessSweepsFailuresAndPacketLoss) {
                       (dir / "r.md").string()});
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("### Success (% of runs)"), std::string::npos);
-  EXPECT_NE(r.out.find("| pf | any (no radio) |"), std::string::npos);
+  // the default tells sightings in path formation (share_sighting): a packet loss is a condition there too
+  EXPECT_NE(r.out.find("| pf | 100 % |"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("any (no radio)"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("| ta | 100 % |"), std::string::npos);
   EXPECT_EQ(r.out.find("10 % of the robots failing"), std::string::npos);  // no 10 % column: no target line
   EXPECT_EQ(read(dir / "r.md"), r.out);
   const auto j = nlohmann::json::parse(read(dir / "r.json"));
-  // path formation runs once per failure fraction (no radio), task allocation per packet loss too
-  EXPECT_EQ(j["runs"].size(), 2u * 2u + 2u * 2u * 2u);
-  ASSERT_EQ(j["cells"].size(), 2u + 4u);
+  // both modes run at each failure fraction and packet loss
+  EXPECT_EQ(j["runs"].size(), 2u * 2u * 2u + 2u * 2u * 2u);
+  ASSERT_EQ(j["cells"].size(), 4u + 4u);
+  EXPECT_EQ(j["path_formation_uses_radio"], true);
   int failed_robots = 0;
   for (const auto& run : j["runs"]) {
     if (run["fail_fraction"] == 0.0) {
@@ -114,16 +117,12 @@ TEST(FaultCli, RobustnessSweepsFailuresAndPacketLoss) {
     }
     if (run["fail_fraction"] == 0.2) failed_robots += run["failures"].get<int>();
     // nothing heard: no robot allocated but the founders themselves, and no path
-    if (run["packet_loss"] == 1.0) {
+    if (run["mode"] == "ta" && run["packet_loss"] == 1.0) {
       EXPECT_FALSE(run["success"].get<bool>());
     }
   }
-  EXPECT_EQ(failed_robots, 6 * 4);  // 4 robots in each of the six runs, all within the first 600 ticks
-  for (const auto& c : j["cells"]) {
-    if (c["mode"] == "pf") {
-      EXPECT_EQ(c["packet_loss"], "any");
-    }
-  }
+  EXPECT_EQ(failed_robots, 8 * 4);  // 4 robots in each of the eight runs, all within the first 600 ticks
+  for (const auto& c : j["cells"]) EXPECT_TRUE(c["packet_loss"].is_number());
   const std::string svg = read(dir / "r.svg");
   EXPECT_NE(svg.find("<svg"), std::string::npos);
   EXPECT_NE(svg.find("with task allocation, packet loss 100 %"), std::string::npos);
@@ -167,7 +166,12 @@ TEST(FaultCli, RobustnessRunsABenchmarksArenasBesideTheScenariosAndReportsEachGr
   std::ofstream(config) << "name = \"tiny\"\nversion = 1\ngenerator_version = 1\nrobots = [8]\nseeds = 1\n"
                            "max_ticks = 300\n\n[[family]]\nfamily = \"open\"\nseeds = [1000001, 1000002]\n"
                            "params = { width = 10, height = 8, distance_min = 3, distance_max = 4 }\n";
+  // path formation without share_sighting uses no radio: its runs stand for every packet loss
+  const auto params = dir / "no_telling.toml";
+  std::ofstream(params) << "share_sighting = 0\n";
   const auto r = cli({"robustness",
+                      "--params",
+                      params.string(),
                       "--scenarios",
                       source("tests/data/short_chain.toml"),
                       "--benchmark",

@@ -3,6 +3,8 @@
 // target are computed from them.
 #include "app/robustness.hpp"
 
+#include <sstream>
+
 #include <gtest/gtest.h>
 
 #include "app/robustness_output.hpp"
@@ -40,6 +42,33 @@ TEST(Robustness, PathFormationRunsOncePerFailureFraction) {
   EXPECT_DOUBLE_EQ(scenarios[5].faults.fail_fraction, 0.1);  // a, failing 10 %, packet loss 30 %
   EXPECT_DOUBLE_EQ(scenarios[5].faults.packet_loss, 0.3);
   EXPECT_EQ(scenarios[6].name, "b");
+}
+
+TEST(Robustness, PathFormationThatTellsSightingsRunsAtEveryPacketLoss) {
+  // with share_sighting path formation listens to the medium: a packet loss is a condition for it
+  RobustnessGrid g{{0.0, 0.1}, {0.0, 0.3}};
+  g.pf_radio = true;
+  EXPECT_TRUE(uses_radio(sim::Mode::kPathFormation, g));
+  EXPECT_FALSE(uses_radio(sim::Mode::kPathFormation, RobustnessGrid{}));
+  const auto variants = make_variants(1, g);
+  const std::vector<sim::Mode> modes{sim::Mode::kPathFormation};
+  const auto cases = robustness_cases(variants, {10}, modes, 2, 1, g.pf_radio);
+  ASSERT_EQ(cases.size(), 2u * 2u * 2u);  // fractions x losses x seeds
+  std::vector<GridRun> runs;
+  for (const GridCase& c : cases) {
+    sim::Metrics m;
+    m.success = variants[c.scenario].loss == 0;  // the loss costs every success
+    m.ticks_to_form = m.success ? 1000 : -1;
+    m.path_length_tu = 100.0;
+    runs.push_back({c, m});
+  }
+  const RobustnessReport r = summarise_robustness({arena("a")}, {100.0}, variants, g, modes, runs);
+  EXPECT_DOUBLE_EQ(r.at(sim::Mode::kPathFormation, 0, 0).success_pct, 100.0);
+  EXPECT_DOUBLE_EQ(r.at(sim::Mode::kPathFormation, 0, 1).success_pct, 0.0);  // not the loss-0 runs
+  std::ostringstream md;
+  write_robustness_markdown(md, r);
+  EXPECT_NE(md.str().find("| pf | 30 % |"), std::string::npos) << md.str();
+  EXPECT_EQ(md.str().find("any (no radio)"), std::string::npos) << md.str();
 }
 
 TEST(Robustness, CellsAndTheDropAtTenPercent) {
