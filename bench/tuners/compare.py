@@ -9,7 +9,8 @@ scored on the same fresh runs with the same fitness; a table with 95 % intervals
     /usr/bin/python3 bench/tuners/compare.py finals --final-seeds 20
     /usr/bin/python3 bench/tuners/compare.py report --docs docs
 
-The problem is an evolve config (default bench/tuners/problem.toml). Every tuner gets the
+The problem is an evolve config (--problem, default bench/tuners/problem.toml; another problem's results go
+to results/tuners-NAME for problem-NAME.toml, and a results folder holds one problem's runs only). Every tuner gets the
 simulations the config's own run spends to choose its best (EvolveConfig.simulation_budget():
 candidates x runs each, plus the finalists' re-evaluation), threads simulations at once, and the
 base params as its starting point:
@@ -20,6 +21,8 @@ base params as its starting point:
                           best finalist is the pick even when it is no better than the base params.
   swarmpath-cmaes-sigma015, -one-finalist, -race-base  sigma0 0.15; one finalist and the base params on
                           the same fresh runs in all; the finalists raced against the base params.
+  swarmpath-cmaes-crn     `[evaluation] fixed_seeds = true` and sigma0 0.15: every generation on the same
+                          seeds (common random numbers), as Optuna's CMA-ES runs.
   irace                   `swarmpath irace` scenario, irace's seed = tuner seed, maxExperiments =
                           the budget; the pick is irace's best (elite 1), `swarmpath irace import`.
   optuna-<sampler>        examples/optuna_tune.py's study: budget / runs-per-trial trials, every
@@ -69,6 +72,9 @@ VARIANTS = {
     # the finalists raced against the base params (docs/racing.md): a finalist worse than them is dropped
     # and its fresh runs go to more paired runs of the rest; with every finalist dropped it stops early
     "swarmpath-cmaes-race-base": ("cmaes", {"reevaluate": ["race_base = true"]}),
+    # Optuna's CMA-ES setup: every generation on generation 0's seeds (common random numbers, so candidates
+    # differ by their params, not by their luck) and a first step near Optuna's (0.15 of the unit box)
+    "swarmpath-cmaes-crn": ("cmaes", {"evaluation": ["fixed_seeds = true"], "optimizer": ["sigma0 = 0.15"]}),
 }
 
 
@@ -135,6 +141,36 @@ def config_copy(problem, tuner, seed, out):
     return path
 
 
+DEFAULT_PROBLEM = "bench/tuners/problem.toml"
+
+
+def default_out(problem):
+    """results/tuners for the default problem, results/tuners-NAME for bench/tuners/problem-NAME.toml (any
+    other config: results/tuners-<its file name>), so that two problems' runs never share a folder."""
+    if pathlib.Path(problem).resolve() == (ROOT / DEFAULT_PROBLEM).resolve():
+        return "results/tuners"
+    stem = pathlib.Path(problem).stem
+    return "results/tuners-" + (stem[len("problem-"):] if stem.startswith("problem-") else stem)
+
+
+def claim(out, problem):
+    """The results folder belongs to one problem (its config hash, everything but [budget], with the base
+    params' values): the first run or finals there records it in problem.json, a later one with another
+    problem is refused, so two problems' runs and picks are never mixed in one table."""
+    import swarmpath
+
+    mine = {"problem": str(problem), "hash": swarmpath.EvolveConfig.load(str(problem)).hash}
+    f = pathlib.Path(out) / "problem.json"
+    if f.exists():
+        theirs = json.loads(f.read_text())
+        if theirs["hash"] != mine["hash"]:
+            sys.exit(f"{out} holds the runs of {theirs['problem']} (config hash {theirs['hash']}), not of {problem} "
+                     f"(hash {mine['hash']}): give another --out")
+        return
+    f.parent.mkdir(parents=True, exist_ok=True)
+    f.write_text(json.dumps(mine, indent=2) + "\n")
+
+
 def cli(*args, **kw):
     return subprocess.run([str(ROOT / "build/release/swarmpath"), *map(str, args)], check=True, **kw)
 
@@ -186,7 +222,7 @@ def cmd_one(a):
     """One tuning run (a child of `run`, which times it): its pick and what it spent."""
     out = pathlib.Path(a.out)
     d = out / "runs" / f"{a.tuner}-s{a.seed}"
-    config = config_copy(a.config, a.tuner, a.seed, out)
+    config = config_copy(a.problem, a.tuner, a.seed, out)
     runner = run_swarmpath if a.tuner.startswith("swarmpath-") else run_irace if a.tuner == "irace" else run_optuna
     meta = runner(config, a.tuner, a.seed, d, a.threads)
     meta.update(tuner=a.tuner, seed=a.seed, config=str(config), threads=a.threads)
@@ -198,6 +234,7 @@ def cmd_run(a):
     time of it and everything it waited for (irace's R and target runners, the simulations' threads);
     up to --jobs at a time."""
     out = pathlib.Path(a.out)
+    claim(out, a.problem)
     todo = []
     for tuner in a.tuners.split(","):
         if tuner not in TUNERS:
@@ -216,7 +253,7 @@ def cmd_run(a):
         while todo and len(running) < a.jobs:
             tuner, seed, d = todo.pop(0)
             cmd = [sys.executable, str(pathlib.Path(__file__).resolve()), "one", "--tuner", tuner, "--seed", str(seed),
-                   "--config", a.config, "--out", a.out, "--threads", str(a.threads)]
+                   "--config", a.problem, "--out", a.out, "--threads", str(a.threads)]
             log = open(d / "run.log", "w")
             p = subprocess.Popen(cmd, stdout=log, stderr=subprocess.STDOUT)
             running[p.pid] = (p, tuner, seed, d, time.perf_counter(), log)
@@ -247,7 +284,8 @@ def cmd_finals(a):
     import swarmpath
 
     out = pathlib.Path(a.out)
-    c = swarmpath.EvolveConfig.load(a.config)
+    claim(out, a.problem)
+    c = swarmpath.EvolveConfig.load(a.problem)
     f = swarmpath.Objective(c)
     train = [i for i, s in enumerate(f.settings) if not s["held_out"]]
     cases = [swarmpath.Case(s, k, FINAL_SEED_BASE + i * a.final_seeds + k) for i, s in enumerate(train)
@@ -382,10 +420,10 @@ def cmd_report(a):
     (out / "table.md").write_text(table + note)
     svg = plot(rows, order, base)
     (out / "tuners.svg").write_text(svg)
-    if a.docs:
+    if a.docs:  # named after the results folder: tuners.svg, tuners-naive.svg for results/tuners-naive
         docs.mkdir(parents=True, exist_ok=True)
-        (docs / "tuners.svg").write_text(svg)
-    print(f"files: {out}/table.md, {out}/tuners.svg" + (f", {docs}/tuners.svg" if a.docs else ""))
+        (docs / f"{out.name}.svg").write_text(svg)
+    print(f"files: {out}/table.md, {out}/tuners.svg" + (f", {docs}/{out.name}.svg" if a.docs else ""))
 
 
 def plot(rows, order, base):
@@ -439,8 +477,11 @@ def main(argv=None):
     sub = ap.add_subparsers(dest="cmd", required=True)
     for name in ("run", "one", "finals", "report"):
         p = sub.add_parser(name)
-        p.add_argument("--config", default="bench/tuners/problem.toml", help="the problem (an evolve config)")
-        p.add_argument("--out", default="results/tuners", help="results folder")
+        p.add_argument("--problem", "--config", dest="problem", default=DEFAULT_PROBLEM,
+                       help="the problem (an evolve config; --config is the same switch)")
+        p.add_argument("--out", default=None,
+                       help="results folder (default results/tuners for the default problem, results/tuners-NAME "
+                            "for bench/tuners/problem-NAME.toml)")
         p.add_argument("--threads", type=int, default=2, help="simulations at once, for every tuner")
         if name == "run":
             p.add_argument("--tuners", default="swarmpath-cmaes,irace,optuna-tpe,optuna-cmaes",
@@ -458,6 +499,7 @@ def main(argv=None):
             p.add_argument("--reference", default="swarmpath-cmaes", help="the tuner the others are compared with")
     a = ap.parse_args(argv)
     os.chdir(ROOT)
+    a.out = a.out or default_out(a.problem)
     {"run": cmd_run, "one": cmd_one, "finals": cmd_finals, "report": cmd_report}[a.cmd](a)
 
 
