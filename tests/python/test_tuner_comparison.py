@@ -102,3 +102,49 @@ def test_variants_of_the_pick_spend_the_same_budget(sp, tmp_path):
     run = json.loads(open(os.path.join(out, "runs", "swarmpath-cmaes-race-base-s1", "evolve", "run.json")).read())
     assert run["racing"]["against"] == "base params"
     assert run["racing"]["simulations"] <= 2 * 3
+
+
+def test_crn_variant_and_a_second_problem_in_its_own_folder(sp, tmp_path):
+    out = str(tmp_path / "tuners")
+    compare("run", "--out", out, "--tuners", "swarmpath-cmaes,swarmpath-cmaes-crn", "--seeds", "1", "--threads", "1")
+    config = {t: open(os.path.join(out, "configs", f"{t}-s1.toml")).read()
+              for t in ("swarmpath-cmaes", "swarmpath-cmaes-crn")}
+    assert "[evaluation]\nfixed_seeds = true\n" in config["swarmpath-cmaes-crn"]
+    assert "[optimizer]\nsigma0 = 0.15\n" in config["swarmpath-cmaes-crn"]
+    assert "fixed_seeds" not in config["swarmpath-cmaes"] and "sigma0" not in config["swarmpath-cmaes"]
+    # on: every generation on generation 0's seeds; off: new seeds each generation
+    for t, same in (("swarmpath-cmaes-crn", True), ("swarmpath-cmaes", False)):
+        run = json.loads(open(os.path.join(out, "runs", f"{t}-s1", "evolve", "run.json")).read())
+        assert run["config"]["evaluation"]["fixed_seeds"] == same
+        seeds = run["seeds"]["generations"]
+        assert len(seeds) > 1 and (all(r == seeds[0] for r in seeds) == same), (t, seeds[:2])
+    # another problem (the same one started elsewhere) is refused in this folder and runs in its own
+    other = tmp_path / "tiny-naive.toml"
+    text = open(TINY_TUNE).read().replace('"../short_chain.toml"', f'"{SOURCE}/tests/data/short_chain.toml"')
+    other.write_text(text.replace('name = "tiny-tune"', 'name = "tiny-tune"\nparams = "naive.toml"'))
+    base = sp.EvolveConfig.load(TINY_TUNE).base
+    base.save(str(tmp_path / "naive.toml"), "# tiny_tune's base with T_explore0 at the middle of its range\n")
+    (tmp_path / "naive.toml").write_text((tmp_path / "naive.toml").read_text().replace(
+        f"T_explore0 = {base['T_explore0']:g}", "T_explore0 = 1600"))
+    assert sp.EvolveConfig.load(str(other)).base["T_explore0"] == 1600
+    for step in (["run", "--tuners", "swarmpath-cmaes", "--seeds", "2"], ["finals", "--final-seeds", "2"]):
+        p = subprocess.run([sys.executable, SCRIPT, *step, "--out", out, "--problem", str(other)], capture_output=True,
+                           text=True, timeout=400)
+        assert p.returncode != 0 and "holds the runs of" in p.stderr, p.stderr
+    assert not os.path.exists(os.path.join(out, "runs", "swarmpath-cmaes-s2"))
+    naive = str(tmp_path / "tuners-naive")
+    for step in (["run", "--tuners", "swarmpath-cmaes-crn", "--seeds", "1", "--threads", "1"],
+                 ["finals", "--final-seeds", "2", "--threads", "1"], ["report", "--docs", str(tmp_path / "docs")]):
+        p = subprocess.run([sys.executable, SCRIPT, *step, "--out", naive, "--problem", str(other)],
+                           capture_output=True, text=True, timeout=400)
+        assert p.returncode == 0, p.stdout[-2000:] + p.stderr[-3000:]
+    assert json.loads(open(os.path.join(naive, "problem.json")).read())["hash"] == sp.EvolveConfig.load(str(other)).hash
+    finals = json.loads(open(os.path.join(naive, "finals.json")).read())
+    assert finals["picks"]["base"]["values"]["T_explore0"] == 1600  # the other problem's base params
+    assert os.path.exists(tmp_path / "docs" / "tuners-naive.svg")  # the plot is named after its folder
+    # the default results folders: one per problem
+    sys.path.insert(0, str(SOURCE / "bench" / "tuners"))
+    import compare as c
+
+    assert c.default_out("bench/tuners/problem.toml") == "results/tuners"
+    assert c.default_out("bench/tuners/problem-naive.toml") == "results/tuners-naive"
