@@ -38,9 +38,9 @@ SensorNeeds sensor_needs(Mode m, const Params& p) {
   return {};
 }
 
-bool robot_listens(Mode m, const Params& p, const RobotMemory& mem) {
-  if (m == Mode::kPathFormation) return listens_for_sighting(p, mem.pf);  // share_sighting [R]
-  if (m != Mode::kTaskAllocation) return true;                            // the world's needs.rab decides
+bool robot_listens(Mode m, const Params& p, const RobotMemory& mem, std::int64_t tick) {
+  if (m == Mode::kPathFormation) return listens_for_sighting(p, mem.pf, tick);  // share_sighting [R]
+  if (m != Mode::kTaskAllocation) return true;  // the world's needs.rab decides
   return mem.ta.state == TaState::kScout || mem.ta.state == TaState::kGoalFounder ||
          mem.ta.state == TaState::kDecisionMaker || claims_links(p, mem.pf) ||
          (mem.ta.state == TaState::kRestingTask && p.rest_recruit && p.recruit_call);
@@ -50,8 +50,8 @@ RabKinds rab_kinds(Mode m, const RabPayload& payload) {
   return m == Mode::kTaskAllocation ? message_kinds(decode(payload)) : kEveryRabKind;
 }
 
-RabKinds rab_interest(Mode m, const Params& p, const RobotMemory& mem) {
-  if (!robot_listens(m, p, mem)) return 0;
+RabKinds rab_interest(Mode m, const Params& p, const RobotMemory& mem, std::int64_t tick) {
+  if (!robot_listens(m, p, mem, tick)) return 0;
   return m == Mode::kTaskAllocation ? ta_interest(p, mem) : kEveryRabKind;
 }
 

@@ -56,8 +56,8 @@ SensorNeeds sensor_needs(Mode m, const Params& p);
 
 /// Whether one robot listens to the range-and-bearing medium in its current state, when the world
 /// senses it at all: in task allocation, only scouts, founders and decision makers do; in path
-/// formation, resting robots without a sighting (share_sighting).
-bool robot_listens(Mode m, const Params& p, const RobotMemory& mem);
+/// formation, resting robots without a sighting, at `tick`, once a telling can reach them (share_sighting).
+bool robot_listens(Mode m, const Params& p, const RobotMemory& mem, std::int64_t tick);
 
 /// The kinds of message (RabKinds bits) a payload broadcast in mode `m` carries: the medium delivers
 /// it only to robots that read one of them (kEveryRabKind outside task allocation).
@@ -66,7 +66,7 @@ RabKinds rab_kinds(Mode m, const RabPayload& payload);
 /// The kinds of message robot `mem` reads this tick, in its state before its control step: 0 when it
 /// does not listen (robot_listens), else every kind that a reading of its inbox in this tick may look
 /// at, whatever row fires (ta_interest).
-RabKinds rab_interest(Mode m, const Params& p, const RobotMemory& mem);
+RabKinds rab_interest(Mode m, const Params& p, const RobotMemory& mem, std::int64_t tick);
 
 /// The LED colour robots show before their first control step.
 Led initial_led(Mode m);

@@ -110,6 +110,8 @@ struct Params {
   bool route_to_sighting = false;  ///< site_fidelity: travel to the sighting along the way it was seen from
   double share_sighting = 300;  ///< pf: robots this near the nest tell where they saw the chain [cm] (0: off)
   double share_after = 15000;   ///< share_sighting: telling begins at this tick of the run [ticks]
+  double share_after_trips =
+      0;  ///< share_sighting: a robot tells / listens after this many fruitless trips (0: share_after)
   // aligning (SPEC §2.4, rows #10-#13) and the chain's links
   bool align_keep_view = true;        ///< rows #10, #13: an aligning robot keeps both references in view
   bool seek_hidden_reference = true;  ///< rows #11, #13: a reference out of view is looked for where it was

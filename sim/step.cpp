@@ -45,9 +45,9 @@ void sense_robot(const SensorView& view, const Params& p, World& w, std::size_t 
   if (w.needs.camera) sense_camera(view, id, blobs);
   // the kinds of message it reads this tick (rab_interest), or every kind when the medium hands
   // every message to every robot that listens (World::rab_by_kind)
-  const bool listens = w.needs.rab && robot_listens(w.mode, p, w.memory[i]);
+  const bool listens = w.needs.rab && robot_listens(w.mode, p, w.memory[i], w.tick);
   const RabKinds interest = !listens        ? 0
-                            : w.rab_by_kind ? rab_interest(w.mode, p, w.memory[i])
+                            : w.rab_by_kind ? rab_interest(w.mode, p, w.memory[i], w.tick)
                                             : kEveryRabKind;
   if (interest != 0) sense_rab(view, id, interest, inbox);
   if (!w.faults.noisy) return;

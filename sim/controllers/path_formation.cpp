@@ -146,6 +146,7 @@ void enter(const Percept& in, const Params& p, RobotMemory& mem, PfState to) {
   m.answering = -1;
   m.explore_leg = ExploreLeg::kWalk;
   if (to == PfState::kReturnToNest && !m.sighted_this_trip) m.has_sighting = false;  // a stale lead
+  if (to == PfState::kResting && !m.has_sighting) ++m.fruitless_trips;  // home without a sighting
   // R (route_to_sighting): the way out of a trip that saw the chain, for the next trip to it
   if (p.route_to_sighting && to == PfState::kReturnToNest && m.has_sighting) mem.route.keep(mem.trail);
   if (to == PfState::kExploring) {
@@ -206,7 +207,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   PfMemory& m = mem.pf;
   PfSight sight;
   pf_perceive(in, p, mem.nest, m, sight);
-  if (listens_for_sighting(p, m)) hear_sighting(in.rab, mem.nest, m);  // share_sighting [R]
+  if (listens_for_sighting(p, m, in.tick)) hear_sighting(in.rab, mem.nest, m);  // share_sighting [R]
   if (m.state == PfState::kSubgoalForming) next_form_leg(in, p, m);
   sight.may_form = !p.form_one_at_a_time || m.state != PfState::kExploring || sight.lure == nullptr ||
                    mem.rng.bernoulli(p.p_form);

@@ -108,6 +108,7 @@ struct PfMemory {
   bool sighted_this_trip = false;  ///< this trip saw the goal or a RED subgoal
   std::int64_t travel_ticks = 0;   ///< ticks spent travelling (to the sighting, following): not budget
   std::int64_t trip_start = 0;     ///< the tick this exploration trip began (TA t_source = elapsed)
+  int fruitless_trips = 0;         ///< trips that ended back home without a sighting (share_after_trips)
   std::int64_t guide_unseen = 0;   ///< guided_departure: consecutive ticks a follower has seen no guide
   int guide_hops = kMaxGuideHops;  ///< guided_departure: hops to the founder, advertised with the light
   int answering = -1;  ///< recruit_call: the calling subgoal this robot goes to (claimed on the medium)

@@ -27,16 +27,23 @@ std::int32_t get_i32(const RabPayload& b, std::size_t at) {
 
 }  // namespace
 
+bool may_tell(const Params& p, const PfMemory& m, std::int64_t tick) {
+  if (p.share_after_trips > 0.0) return static_cast<double>(m.fruitless_trips) >= p.share_after_trips;
+  return static_cast<double>(tick) >= p.share_after;
+}
+
 bool tells_sighting(const Params& p, const PfMemory& m, double nest_distance_cm, std::int64_t tick) {
-  return p.share_sighting > 0.0 && static_cast<double>(tick) >= p.share_after && m.role == PfRole::kSwarm &&
-         m.has_sighting && nest_distance_cm <= p.share_sighting &&
+  return p.share_sighting > 0.0 && may_tell(p, m, tick) && m.role == PfRole::kSwarm && m.has_sighting &&
+         nest_distance_cm <= p.share_sighting &&
          (m.state == PfState::kResting || m.state == PfState::kReturnToNest ||
           m.state == PfState::kExploring);
 }
 
-bool listens_for_sighting(const Params& p, const PfMemory& m) {
-  return p.share_sighting > 0.0 && m.role == PfRole::kSwarm && m.state == PfState::kResting &&
-         !m.has_sighting;
+bool listens_for_sighting(const Params& p, const PfMemory& m, std::int64_t tick) {
+  // what is heard at `tick` was told at tick - 1; a robot's own trips are its own condition
+  const std::int64_t told_at = p.share_after_trips > 0.0 ? tick : tick - 1;
+  return p.share_sighting > 0.0 && may_tell(p, m, told_at) && m.role == PfRole::kSwarm &&
+         m.state == PfState::kResting && !m.has_sighting;
 }
 
 void tell_sighting(int id, Vec2 nest, const PfMemory& m, Command& cmd) {

@@ -14,13 +14,21 @@
 
 namespace swarmpath::sim {
 
+/// Whether robot `m` may tell at `tick`: with share_after_trips > 0, once it has come home that many
+/// times from a trip without a sighting (its own record of a stalled search; share_after then plays
+/// no part); otherwise from tick share_after of the run on.
+bool may_tell(const Params& p, const PfMemory& m, std::int64_t tick);
+
 /// A robot of path formation without task allocation that knows a sighting tells it while it is
-/// within share_sighting of the nest (`nest_distance_cm` from the positioning sensor), from tick
-/// share_after of the run on.
+/// within share_sighting of the nest (`nest_distance_cm` from the positioning sensor), when it may
+/// (may_tell).
 bool tells_sighting(const Params& p, const PfMemory& m, double nest_distance_cm, std::int64_t tick);
 
-/// A resting robot of path formation without task allocation with no sighting of its own listens.
-bool listens_for_sighting(const Params& p, const PfMemory& m);
+/// A resting robot of path formation without task allocation with no sighting of its own listens at
+/// `tick` under the condition of the telling: a message is heard one tick after it is told, so from
+/// tick share_after + 1 of the run on, or (share_after_trips > 0) once it has made that many
+/// fruitless trips itself. Before then nobody it could hear tells.
+bool listens_for_sighting(const Params& p, const PfMemory& m, std::int64_t tick);
 
 /// The message telling `m.sighting` (relative to the nest, in cm) from robot `id`, into `cmd`.
 void tell_sighting(int id, Vec2 nest, const PfMemory& m, Command& cmd);

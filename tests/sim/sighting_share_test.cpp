@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "sim/controller.hpp"
+#include "sim/hash.hpp"
 #include "sim/step.hpp"
 #include "test_support.hpp"
 
@@ -37,7 +38,8 @@ TEST(SightingShare, ATellingCarriesTheSightingToARestingRobotWithoutOne) {
 
   PfMemory listener;
   listener.state = PfState::kResting;
-  EXPECT_TRUE(listens_for_sighting(p, listener));
+  EXPECT_FALSE(listens_for_sighting(p, listener, 0));  // at tick 0 nobody has told yet
+  EXPECT_TRUE(listens_for_sighting(p, listener, 1));
   std::array<RabMessage, 1> inbox{};
   inbox[0].sender = 7;
   inbox[0].range_cm = 120;
@@ -47,7 +49,7 @@ TEST(SightingShare, ATellingCarriesTheSightingToARestingRobotWithoutOne) {
   EXPECT_FALSE(listener.sighted_this_trip);  // a trip that finds nothing there forgets it
   EXPECT_NEAR(listener.sighting.x, 6.93, 0.006);
   EXPECT_NEAR(listener.sighting.y, -2.41, 0.006);
-  EXPECT_FALSE(listens_for_sighting(p, listener));  // it has one of its own now
+  EXPECT_FALSE(listens_for_sighting(p, listener, 1));  // it has one of its own now
 
   // off, and robots of task allocation, neither tell nor listen
   PfMemory allocated = teller;
@@ -57,7 +59,95 @@ TEST(SightingShare, ATellingCarriesTheSightingToARestingRobotWithoutOne) {
   EXPECT_FALSE(tells_sighting(p, teller, 100.0, 0));
   PfMemory resting;
   resting.state = PfState::kResting;
-  EXPECT_FALSE(listens_for_sighting(p, resting));
+  EXPECT_FALSE(listens_for_sighting(p, resting, 1));
+}
+
+// share_after [R]: a robot listens under the condition of the telling, one tick later (a message told
+// at tick t is heard at t + 1); share_after_trips [R]: a robot tells and listens once it has come home
+// from that many trips without a sighting, and the tick then plays no part.
+TEST(SightingShare, ListeningFollowsTheTellingsCondition) {
+  Params p;
+  p.share_sighting = 300;
+  p.share_after = 6000;
+  PfMemory teller;
+  teller.state = PfState::kResting;
+  teller.has_sighting = true;
+  PfMemory listener;
+  listener.state = PfState::kResting;
+  EXPECT_FALSE(tells_sighting(p, teller, 100.0, 5999));
+  EXPECT_TRUE(tells_sighting(p, teller, 100.0, 6000));
+  EXPECT_FALSE(listens_for_sighting(p, listener, 0));  // nobody tells yet (it listened from tick 0 before)
+  EXPECT_FALSE(listens_for_sighting(p, listener, 6000));
+  EXPECT_TRUE(listens_for_sighting(p, listener, 6001));  // hears what was told at tick 6 000
+
+  p.share_after_trips = 2;  // replaces share_after
+  EXPECT_FALSE(tells_sighting(p, teller, 100.0, 30000));
+  EXPECT_FALSE(listens_for_sighting(p, listener, 30000));
+  teller.fruitless_trips = 2;
+  listener.fruitless_trips = 1;
+  EXPECT_TRUE(tells_sighting(p, teller, 100.0, 0));
+  EXPECT_FALSE(listens_for_sighting(p, listener, 30000));
+  listener.fruitless_trips = 2;
+  EXPECT_TRUE(listens_for_sighting(p, listener, 0));
+}
+
+// Two resting robots at the nest, one knowing a sighting: run tick by tick across the first telling
+// tick, the other has it exactly one tick after it is first told, not before and not later.
+int tick_heard(const Params& p, std::int64_t from_tick, int teller_trips, int listener_trips) {
+  const Scenario s = with_robots(load_scenario(test::source_path("tests/data/small_serpentine.toml")), 2);
+  World w = make_world(s, p, Mode::kPathFormation, 1);
+  EXPECT_LT(dist(w.poses[0].p, w.poses[1].p), 2.0);  // within the medium's 3 m
+  for (std::size_t i = 0; i < 2; ++i) {
+    PfMemory& m = w.memory[i].pf;
+    m.state = PfState::kResting;
+    w.memory[i].state = static_cast<std::uint8_t>(m.state);
+  }
+  w.memory[0].pf.has_sighting = true;
+  w.memory[0].pf.sighting = w.memory[0].nest + Vec2{4.0, -1.5};
+  w.memory[0].pf.fruitless_trips = teller_trips;
+  w.memory[1].pf.fruitless_trips = listener_trips;
+  w.tick = from_tick;
+  MetricsAccumulator metrics;
+  metrics.begin(w.robot_count());
+  for (int k = 0; k < 10; ++k) {
+    const std::int64_t t = w.tick;
+    step(s, p, w, metrics);
+    if (w.memory[1].pf.has_sighting) {
+      EXPECT_NEAR(dist(w.memory[1].pf.sighting, w.memory[0].pf.sighting), 0.0, 0.006);
+      return static_cast<int>(t);
+    }
+  }
+  return -1;
+}
+
+TEST(SightingShare, AMessageToldAtTheFirstTellingTickIsHeardTheNextTick) {
+  Params p;
+  p.share_sighting = 300;
+  p.share_after = 6000;
+  p.t_rest = 1000;                             // both stay resting
+  EXPECT_EQ(tick_heard(p, 5995, 0, 0), 6001);  // told from tick 6 000 on
+  p.share_after_trips = 2;                     // told and heard by robots that have made two fruitless trips
+  EXPECT_EQ(tick_heard(p, 100, 2, 2), 101);
+  EXPECT_EQ(tick_heard(p, 100, 2, 1), -1);  // the listener has not
+  EXPECT_EQ(tick_heard(p, 100, 1, 2), -1);  // the teller has not
+}
+
+// Listening only from the first telling tick on leaves every run as it was: small_serpentine, 40 robots,
+// telling from tick 3 000, 8 000 ticks, state hashes of the code in which resting robots listened from tick
+// 0 (seed 2 also with 30 % packet loss, whose draws are made per message heard).
+TEST(SightingShare, ListeningFromTheFirstTellingTickLeavesTheRunsAsTheyWere) {
+  Params p;
+  p.share_after = 3000;
+  const Scenario s = with_robots(
+      with_max_ticks(load_scenario(test::source_path("tests/data/small_serpentine.toml")), 8000), 40);
+  FaultModel lossy;
+  lossy.packet_loss = 0.3;
+  const auto hash = [&](const Scenario& sc, std::uint64_t seed) {
+    return to_hex(run(p, sc, Mode::kPathFormation, seed, [](const World&) { return false; }).state_hash);
+  };
+  EXPECT_EQ(hash(s, 1), "8e9be644699b0852");
+  EXPECT_EQ(hash(s, 2), "52b9dc661564f748");
+  EXPECT_EQ(hash(with_faults(s, lossy), 2), "45259867366ef44e");
 }
 
 int links_laid_by(const Params& p, const Scenario& s, std::uint64_t seed) {
@@ -121,6 +211,35 @@ TEST(SightingShare, TellingFromShareAfterLeavesAQuickSearchAsItWasAndHelpsASlowO
   late.t_leaf = 0;
   late.share_after = 3000;
   expect_told_robots_lay_more_links(off, late);
+}
+
+// share_after_trips [R]: robots that have come home from that many trips without a sighting tell and
+// listen, whatever the tick. A quick search (short_chain, 20 robots, seed 1, formed at tick 1 445, before
+// any robot has come home twice) runs as without sharing with 2 trips, and is changed with 1 (formed at
+// 1 436). In small_serpentine (40 robots, seeds 1-8, 8 000 ticks) the default's tick 15 000 is never
+// reached and every run is the one without sharing; with 2 trips the telling changes every run.
+TEST(SightingShare, TellingAfterFruitlessTripsComesWhenRobotsHaveSearchedInVain) {
+  Params off;
+  off.share_sighting = 0;
+  Params tick = off;
+  tick.share_sighting = 300;  // share_after 15 000, the default
+  Params trips = tick;
+  trips.share_after_trips = 2;
+  Params one = tick;
+  one.share_after_trips = 1;
+  const auto hash = [](const Params& p, const Scenario& s, std::uint64_t seed) {
+    return run(p, s, Mode::kPathFormation, seed, [](const World&) { return false; }).state_hash;
+  };
+  const Scenario quick = load_scenario(test::source_path("tests/data/short_chain.toml"));
+  EXPECT_EQ(hash(off, quick, 1), hash(trips, quick, 1));
+  EXPECT_NE(hash(off, quick, 1), hash(one, quick, 1));
+  const Scenario slow =
+      with_max_ticks(load_scenario(test::source_path("tests/data/small_serpentine.toml")), 8000);
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const std::uint64_t without = hash(off, slow, seed);
+    EXPECT_EQ(hash(tick, slow, seed), without) << "seed " << seed;
+    EXPECT_NE(hash(trips, slow, seed), without) << "seed " << seed;
+  }
 }
 
 }  // namespace
