@@ -1,0 +1,133 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: MIT
+"""Compare `swarmpath table --json` outputs run by run: candidates against a baseline on the same runs.
+
+    scripts/paired_runs.py BASE.json CAND.json [CAND.json ...] [--mode pf|ta]
+
+Runs are paired by (scenario, robots, seed, mode). For each file: success per arena family (the
+scenario's name without its trailing -N), runs formed, the success difference CAND - BASE in points
+with a 95 % interval (normal approximation over the paired runs), the difference in ticks to form
+where both formed, and, where BASE holds task-allocation runs, the cases (scenario x robots) in which
+task allocation's mean time to form is below path formation's (a case path formation never forms
+counts as faster; a case task allocation never forms does not), the paper's "formed faster with TA".
+A candidate without task-allocation runs is compared with BASE's (a switch of path formation's
+leaves them bit for bit as they are).
+"""
+import argparse
+import json
+import math
+import sys
+
+
+def fail(message):
+    print(f"error: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
+def load(path):
+    """The runs of a `table --json` output, keyed by (scenario, robots, seed, mode)."""
+    try:
+        with open(path) as f:
+            data = json.load(f)
+    except (OSError, json.JSONDecodeError) as e:
+        fail(f"{path}: {e}")
+    if not isinstance(data, dict) or not isinstance(data.get("runs"), list):
+        fail(f"{path}: not a `swarmpath table --json` output (no 'runs' list)")
+    runs = {}
+    for r in data["runs"]:
+        runs[(r["scenario"], r["robots"], r["seed"], r["mode"])] = r
+    return runs
+
+
+def family(scenario):
+    head, _, tail = scenario.rpartition("-")
+    return head if head and tail.isdigit() else scenario
+
+
+def interval(values):
+    """Mean and 95 % half-width (normal approximation)."""
+    n = len(values)
+    if n == 0:
+        return float("nan"), float("nan")
+    m = sum(values) / n
+    if n == 1:
+        return m, 0.0
+    sd = math.sqrt(sum((x - m) ** 2 for x in values) / (n - 1))
+    return m, 1.96 * sd / math.sqrt(n)
+
+
+def case_times(runs, mode):
+    """Mean ticks to form per (scenario, robots) over the runs that formed; None where none did."""
+    cases = {}
+    for (sc, rb, _, m), r in runs.items():
+        if m != mode:
+            continue
+        t = cases.setdefault((sc, rb), [])
+        if r["success"]:
+            t.append(r["ticks_to_form"])
+    return {k: (sum(v) / len(v) if v else None) for k, v in cases.items()}
+
+
+def ta_faster(ta_runs, pf_runs):
+    ta, pf = case_times(ta_runs, "ta"), case_times(pf_runs, "pf")
+    faster = 0
+    for case, t in ta.items():
+        if case in pf and t is not None and (pf[case] is None or t < pf[case]):
+            faster += 1
+    return faster, len([c for c in ta if c in pf])
+
+
+def compare(base, cand, mode):
+    keys = sorted(k for k in cand if k in base and (mode is None or k[3] == mode))
+    fams = {}
+    for k in keys:
+        f = fams.setdefault(family(k[0]), [0, 0])
+        f[0] += bool(cand[k]["success"])
+        f[1] += 1
+    diff = interval([float(cand[k]["success"]) - float(base[k]["success"]) for k in keys])
+    both = [cand[k]["ticks_to_form"] - base[k]["ticks_to_form"] for k in keys
+            if cand[k]["success"] and base[k]["success"]]
+    out = {
+        "runs": len(keys),
+        "formed": sum(bool(cand[k]["success"]) for k in keys),
+        "base_formed": sum(bool(base[k]["success"]) for k in keys),
+        "families": fams,
+        "success_points": (100 * diff[0], 100 * diff[1]),
+        "ticks_both_formed": interval(both) + (len(both),),
+    }
+    ta_source = cand if any(k[3] == "ta" for k in cand) else base
+    if any(k[3] == "ta" for k in ta_source):
+        out["ta_faster"] = ta_faster(ta_source, cand)
+    return out
+
+
+def main(argv=None):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0],
+                                 epilog=__doc__.split("\n\n", 2)[2],
+                                 formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("base", help="the baseline's `table --json` output")
+    ap.add_argument("candidates", nargs="+", help="candidates' outputs on the same runs")
+    ap.add_argument("--mode", choices=["pf", "ta"], default=None,
+                    help="compare only these runs (default: every mode both files hold)")
+    a = ap.parse_args(argv)
+    base = load(a.base)
+    rows = [(p, compare(base, load(p), a.mode)) for p in a.candidates]
+    fams = sorted({f for _, r in rows for f in r["families"]})
+    print("| file | " + " | ".join(fams) + " | formed | vs base (points, 95 %) | ticks where both formed "
+          "(95 %, runs) | TA faster (cases) |")
+    print("|" + "---|" * (len(fams) + 5))
+    for path, r in rows:
+        if r["runs"] == 0:
+            fail(f"{path}: no runs in common with {a.base}")
+        cells = [f"{r['families'][f][0]}/{r['families'][f][1]}" if f in r["families"] else "-" for f in fams]
+        m, h = r["success_points"]
+        tm, th, tn = r["ticks_both_formed"]
+        ticks = f"{tm:+.0f} [{tm - th:.0f}, {tm + th:.0f}] ({tn})" if tn else "-"
+        fast = f"{r['ta_faster'][0]} of {r['ta_faster'][1]}" if "ta_faster" in r else "-"
+        print(f"| {path} | " + " | ".join(cells) +
+              f" | {r['formed']}/{r['runs']} (base {r['base_formed']}) | {m:+.1f} [{m - h:.1f}, {m + h:.1f}] "
+              f"| {ticks} | {fast} |")
+
+
+if __name__ == "__main__":
+    main()
