@@ -11,7 +11,8 @@ where both formed, and, where BASE holds task-allocation runs, the cases (scenar
 task allocation's mean time to form is below path formation's (a case path formation never forms
 counts as faster; a case task allocation never forms does not), the paper's "formed faster with TA".
 A candidate without task-allocation runs is compared with BASE's (a switch of path formation's
-leaves them bit for bit as they are).
+leaves them bit for bit as they are). To run two params files side by side instead of comparing
+outputs already written, `swarmpath evaluate --params A.toml --against B.toml` does both.
 """
 import argparse
 import json
