@@ -35,7 +35,11 @@ def load(path):
     if not isinstance(data, dict) or not isinstance(data.get("runs"), list):
         fail(f"{path}: not a `swarmpath table --json` output (no 'runs' list)")
     runs = {}
-    for r in data["runs"]:
+    for i, r in enumerate(data["runs"]):
+        missing = [k for k in ("scenario", "robots", "seed", "mode", "success", "ticks_to_form")
+                   if not isinstance(r, dict) or k not in r]
+        if missing:
+            fail(f"{path}: runs[{i}] lacks {', '.join(missing)}")
         runs[(r["scenario"], r["robots"], r["seed"], r["mode"])] = r
     return runs
 
@@ -113,13 +117,14 @@ def main(argv=None):
     a = ap.parse_args(argv)
     base = load(a.base)
     rows = [(p, compare(base, load(p), a.mode)) for p in a.candidates]
+    for path, r in rows:
+        if r["runs"] == 0:
+            fail(f"{path}: no runs in common with {a.base}")
     fams = sorted({f for _, r in rows for f in r["families"]})
     print("| file | " + " | ".join(fams) + " | formed | vs base (points, 95 %) | ticks where both formed "
           "(95 %, runs) | TA faster (cases) |")
     print("|" + "---|" * (len(fams) + 5))
     for path, r in rows:
-        if r["runs"] == 0:
-            fail(f"{path}: no runs in common with {a.base}")
         cells = [f"{r['families'][f][0]}/{r['families'][f][1]}" if f in r["families"] else "-" for f in fams]
         m, h = r["success_points"]
         tm, th, tn = r["ticks_both_formed"]

@@ -83,3 +83,14 @@ def test_bad_input_says_which_file(tmp_path):
     bad.write_text("{\"cases\": []}")
     code, _, err = paired(bad, bad)
     assert code == 2 and err.startswith("error: ") and "bad.json" in err and "runs" in err
+
+
+def test_a_run_without_its_fields_and_files_without_common_runs_are_bad_input(tmp_path):
+    good = write(tmp_path / "good.json", [run("u-trap-1", 1, "pf", True, 500)])
+    other = write(tmp_path / "other.json", [run("u-trap-1", 2, "pf", True, 500)])
+    lacking = tmp_path / "lacking.json"
+    lacking.write_text(json.dumps({"runs": [{"scenario": "u-trap-1", "robots": 60, "seed": 1}]}))
+    code, out, err = paired(good, lacking)
+    assert code == 2 and "lacking.json: runs[0] lacks mode, success, ticks_to_form" in err, err
+    code, out, err = paired(good, other)
+    assert code == 2 and "no runs in common" in err and out == "", (out, err)
