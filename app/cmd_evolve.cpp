@@ -242,8 +242,7 @@ int run_evolve(const EvolveOptions& o, const evolve::EvaluatorFactory& evaluator
   for (std::size_t i = 0; i < r.finalists.size(); ++i) {
     const evolve::Finalist& f = r.finalists[i];
     print_stats_row(out, (i == r.best ? "**" + std::to_string(i) + " (best)**" : std::to_string(i)),
-                    "gen " + std::to_string(f.elite.generation) + " #" + std::to_string(f.elite.candidate),
-                    f.elite.stats, f.reevaluated, f.held_out);
+                    evolve::elite_origin(f.elite, true), f.elite.stats, f.reevaluated, f.held_out);
   }
   print_stats_row(out, "base params", c.params_written.empty() ? "paper defaults" : c.params_written,
                   evolve::CandidateStats{}, r.base.reevaluated, r.base.held_out);

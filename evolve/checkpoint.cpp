@@ -218,4 +218,13 @@ RunState read_checkpoint(const std::string& path) {
   }
 }
 
+std::string elite_origin(const Elite& e, bool short_form) {
+  const std::string g = std::to_string(e.generation);
+  if (e.candidate == kDistributionMean) {
+    return short_form ? "mean after gen " + g : "the distribution mean after generation " + g;
+  }
+  const std::string k = std::to_string(e.candidate);
+  return short_form ? "gen " + g + " #" + k : "generation " + g + ", candidate " + k;
+}
+
 }  // namespace swarmpath::evolve

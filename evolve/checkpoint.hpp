@@ -55,8 +55,16 @@ struct Elite {
   std::vector<double> values;  ///< its decoded tuned values (what makes candidates distinct)
   CandidateStats stats;        ///< over its generation's cases (the best, if it came back)
   std::int64_t generation = 0;
-  int candidate = 0;  ///< index in its generation's batch
+  int candidate = 0;  ///< index in its generation's batch; kDistributionMean for the optimiser's mean
 };
+
+/// Elite::candidate of a finalist that is the optimiser's distribution mean after `generation`
+/// generations ([reevaluate] mean_finalist): never simulated during the run, so its stats are empty.
+inline constexpr int kDistributionMean = -1;
+
+/// Where a finalist came from, for its row and header: "generation 3, candidate 5" or
+/// "the distribution mean after generation 4" (short: "gen 3 #5", "mean after gen 4").
+std::string elite_origin(const Elite& e, bool short_form = false);
 
 /// Everything a resume needs.
 struct RunState {

@@ -444,6 +444,11 @@ void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string
     t->fail("keep_base_level", "applies only with keep_base = true: remove it or set keep_base = true");
   }
   r.keep_base_level = number_in(*t, "keep_base_level", r.keep_base_level, 1e-6, 0.5);
+  r.mean_finalist = t->boolean_or("mean_finalist", r.mean_finalist);
+  if (r.mean_finalist && c.optimizer.name != "cmaes") {
+    t->fail("mean_finalist", "the distribution mean is CMA-ES's (optimizer name = \"cmaes\"), not " +
+                                 c.optimizer.name + "'s: remove mean_finalist");
+  }
   if (r.race_base && !r.keep_base) {
     t->fail("race_base",
             "racing against the base params leaves them the pick when every finalist is "
@@ -644,6 +649,7 @@ nlohmann::ordered_json config_json(const EvolveConfig& c) {
     j["reevaluate"]["race_base_level"] = c.reevaluate.race_base_level;
     j["reevaluate"]["race_first_test"] = c.reevaluate.race_first_test;
   }
+  if (c.reevaluate.mean_finalist) j["reevaluate"]["mean_finalist"] = true;  // only when on: hash kept
   // keeping the base params is the default of single-objective runs: their hash names it only when
   // it is off or at another level, so configs that leave it alone keep their hash
   if (!c.multi_objective() && !c.reevaluate.keep_base) j["reevaluate"]["keep_base"] = false;

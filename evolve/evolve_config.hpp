@@ -81,6 +81,10 @@ struct Reevaluation {
   /// Single-objective runs only (a multi-objective run reports its whole front).
   bool keep_base = true;
   double keep_base_level = 0.05;  ///< the family-wise level of that test (split over the finalists)
+  /// The last of the top_k finalists is CMA-ES's distribution mean after the last generation
+  /// (Optimizer::recommended_x), never simulated during the run, instead of the top_k-th best
+  /// candidate by generation mean. CMA-ES only; the same simulations.
+  bool mean_finalist = false;
 };
 
 struct EvolveConfig {

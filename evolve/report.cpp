@@ -25,6 +25,7 @@ nlohmann::ordered_json finalist_json(const EvolveConfig& c, const Finalist& f, s
   j["rank"] = rank;
   j["generation"] = f.elite.generation;
   j["candidate"] = f.elite.candidate;
+  if (c.reevaluate.mean_finalist) j["distribution_mean"] = f.elite.candidate == kDistributionMean;
   j["generation_stats"] = stats_json(f.elite.stats);
   j["reevaluated"] = stats_json(f.reevaluated);
   j["held_out"] = f.held_out.runs > 0 ? stats_json(f.held_out) : nlohmann::ordered_json(nullptr);
@@ -124,13 +125,18 @@ std::string best_toml(const EvolveConfig& c, const RunResult& r) {
     h << "# No finalist beat the base params on fresh seeds: they score "
       << short_text(r.base.reevaluated.fitness) << " over " << r.base.reevaluated.runs
       << " runs (success rate " << short_text(r.base.reevaluated.success_rate) << "), the best of "
-      << r.finalists.size() << " finalists (generation " << f.elite.generation << ", candidate "
-      << f.elite.candidate << ") " << short_text(f.reevaluated.fitness) << " (success rate "
-      << short_text(f.reevaluated.success_rate) << ").\n";
+      << r.finalists.size() << " finalists (" << elite_origin(f.elite) << ") "
+      << short_text(f.reevaluated.fitness) << " (success rate " << short_text(f.reevaluated.success_rate)
+      << ").\n";
   } else {
-    h << "# Found in generation " << f.elite.generation << " (candidate " << f.elite.candidate
-      << ", generation mean fitness " << short_text(f.elite.stats.fitness) << "); chosen among "
-      << r.finalists.size()
+    if (f.elite.candidate == kDistributionMean) {
+      h << "# CMA-ES's " << elite_origin(f.elite)
+        << " (mean_finalist; never simulated during the run); chosen among ";
+    } else {
+      h << "# Found in generation " << f.elite.generation << " (candidate " << f.elite.candidate
+        << ", generation mean fitness " << short_text(f.elite.stats.fitness) << "); chosen among ";
+    }
+    h << r.finalists.size()
       << " finalists by its fitness on fresh seeds: " << short_text(f.reevaluated.fitness) << " over "
       << f.reevaluated.runs << " runs, success rate " << short_text(f.reevaluated.success_rate) << ".\n";
     h << "# The base params on the same fresh seeds: fitness " << short_text(r.base.reevaluated.fitness)

@@ -49,6 +49,25 @@ void update_elites(std::vector<Elite>& elites, const Genome& genome, const std::
   if (elites.size() > keep) elites.resize(keep);
 }
 
+// [reevaluate] mean_finalist: the optimiser's distribution mean after the last generation takes the
+// last of the `keep` finalists' places, unless it decodes to the values of a finalist kept before it
+// or breaks a constraint
+std::vector<Elite> with_mean_finalist(std::vector<Elite> elites, const Genome& genome, const Optimizer& opt,
+                                      std::int64_t generations, std::size_t keep) {
+  const Vector x = opt.recommended_x();
+  if (x.empty() || generations == 0 || keep == 0) return elites;
+  const Decoded d = decode(genome, x);
+  if (!d.violation.empty()) return elites;
+  Elite mean{x, tuned_numbers(genome, d.params), CandidateStats{}, generations - 1, kDistributionMean};
+  const std::size_t before = std::min(elites.size(), keep - 1);
+  if (std::any_of(elites.begin(), elites.begin() + static_cast<std::ptrdiff_t>(before),
+                  [&](const Elite& e) { return e.values == mean.values; }))
+    return elites;
+  elites.resize(before);
+  elites.push_back(std::move(mean));
+  return elites;
+}
+
 // the checkpoint goes last: a kill or a failed write before it leaves the previous checkpoint,
 // whose resume re-runs the generation (and rewrites the files that ran ahead of it)
 void write_progress_files(const EvolveConfig& c, const RunState& st, const std::string& dir) {
@@ -373,25 +392,28 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
   if (st.elites.empty()) {
     throw std::runtime_error("no valid candidate to report: every candidate broke a constraint");
   }
+  const std::vector<Elite> elites = c.reevaluate.mean_finalist
+                                        ? with_mean_finalist(st.elites, c.genome, *opt, st.generation, keep)
+                                        : st.elites;
   std::vector<Decoded> finalists;
-  for (const Elite& e : st.elites) finalists.push_back(decode(c.genome, e.x));
+  for (const Elite& e : elites) finalists.push_back(decode(c.genome, e.x));
   // the base params run last on the same cases: the pick unless a finalist beats them (keep_base),
   // else a reference
   finalists.push_back(Decoded{c.genome.base, false, {}});
-  note("re-evaluating " + std::to_string(st.elites.size()) + " finalists and the base params on " +
+  note("re-evaluating " + std::to_string(elites.size()) + " finalists and the base params on " +
        std::to_string(result.reevaluation_cases.size()) + " fresh cases each");
-  const RaceOutcome race =
-      c.reevaluate.race_base ? race_against_base(f, finalists, result.reevaluation_cases, c.seed,
-                                                 c.reevaluate, evaluator, o.progress)
-                             : reevaluate_finalists(f, finalists, st.elites.size(), result.reevaluation_cases,
-                                                    c.reevaluate, evaluator, o.progress);
+  const RaceOutcome race = c.reevaluate.race_base
+                               ? race_against_base(f, finalists, result.reevaluation_cases, c.seed,
+                                                   c.reevaluate, evaluator, o.progress)
+                               : reevaluate_finalists(f, finalists, elites.size(), result.reevaluation_cases,
+                                                      c.reevaluate, evaluator, o.progress);
   result.race = race.summary;
   std::optional<std::size_t> best;
   for (std::size_t i = 0; i < finalists.size(); ++i) {
     const FinalistRuns& runs = race.finalists[i];
     const auto [train, held] = split_held_out(runs.scores, 0, result.settings, runs.cases);
     const bool base = i + 1 == finalists.size();
-    Finalist fin{base ? Elite{} : st.elites[i],
+    Finalist fin{base ? Elite{} : elites[i],
                  finalists[i].params,
                  summarise(train),
                  summarise(held),

@@ -23,6 +23,8 @@ base params as its starting point:
                           the same fresh runs in all; the finalists raced against the base params.
   swarmpath-cmaes-crn     `[evaluation] fixed_seeds = true` and sigma0 0.15: every generation on the same
                           seeds (common random numbers), as Optuna's CMA-ES runs.
+  swarmpath-cmaes-mean    `[reevaluate] mean_finalist = true`: the last finalist is CMA-ES's
+                          distribution mean after the last generation.
   irace                   `swarmpath irace` scenario, irace's seed = tuner seed, maxExperiments =
                           the budget; the pick is irace's best (elite 1), `swarmpath irace import`.
   optuna-<sampler>        examples/optuna_tune.py's study: budget / runs-per-trial trials, every
@@ -75,6 +77,9 @@ VARIANTS = {
     # Optuna's CMA-ES setup: every generation on generation 0's seeds (common random numbers, so candidates
     # differ by their params, not by their luck) and a first step near Optuna's (0.15 of the unit box)
     "swarmpath-cmaes-crn": ("cmaes", {"evaluation": ["fixed_seeds = true"], "optimizer": ["sigma0 = 0.15"]}),
+    # the last finalist is CMA-ES's distribution mean after the last generation instead of the next-best
+    # candidate (evolve/README.md, mean_finalist): the same generations and fresh runs
+    "swarmpath-cmaes-mean": ("cmaes", {"reevaluate": ["mean_finalist = true"]}),
 }
 
 

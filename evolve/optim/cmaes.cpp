@@ -229,6 +229,8 @@ std::string Cmaes::termination() const {
   return "";
 }
 
+Vector Cmaes::recommended_x() const { return box_.from_unit(to_vector(mean_)); }
+
 nlohmann::json Cmaes::state() const {
   auto j = state_header(name(), n_);
   j["rng"] = rng_to_json(rng_);

@@ -52,6 +52,9 @@ class Cmaes final : public Optimizer {
 
   double best_f() const override { return best_.f; }
 
+  /// The distribution mean m (tutorial, eq. 42) in the caller's units, projected onto the bounds.
+  Vector recommended_x() const override;
+
   nlohmann::json state() const override;
   void restore(const nlohmann::json& state) override;
 

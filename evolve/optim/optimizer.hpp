@@ -79,6 +79,10 @@ class Optimizer {
   virtual Vector best_x() const = 0;
   virtual double best_f() const = 0;
 
+  /// The point the optimiser itself would return under noise, which need never have been asked
+  /// (CMA-ES: its distribution mean, projected onto the bounds); empty for optimisers without one.
+  virtual Vector recommended_x() const { return {}; }
+
   /// The whole state (random generator included); restore() of it continues bit-identically.
   virtual nlohmann::json state() const = 0;
   virtual void restore(const nlohmann::json& state) = 0;
