@@ -130,7 +130,7 @@ std::string best_toml(const EvolveConfig& c, const RunResult& r) {
       << ").\n";
   } else {
     if (f.elite.candidate == kDistributionMean) {
-      h << "# CMA-ES's " << elite_origin(f.elite)
+      h << "# CMA-ES's distribution mean after generation " << f.elite.generation
         << " (mean_finalist; never simulated during the run); chosen among ";
     } else {
       h << "# Found in generation " << f.elite.generation << " (candidate " << f.elite.candidate

@@ -82,6 +82,11 @@ VARIANTS = {
     "swarmpath-cmaes-mean": ("cmaes", {"reevaluate": ["mean_finalist = true"]}),
 }
 
+# the variants that change only how swarmpath-cmaes picks among what its generations found: with the same
+# tuner seed their generations are swarmpath-cmaes's bit for bit, so the report pairs them seed by seed
+SAME_GENERATIONS = ("swarmpath-cmaes-finalist", "swarmpath-cmaes-one-finalist", "swarmpath-cmaes-race-base",
+                    "swarmpath-cmaes-mean")
+
 
 def one_finalist(body):
     """[reevaluate]'s lines for one finalist on the fresh runs that top_k finalists and the base params
@@ -365,6 +370,15 @@ def welch(a, b):
     return ma - mb, t975(math.floor(df)) * math.sqrt(se2)
 
 
+def paired(a, b):
+    """a - b over the tuner seeds both ran ({seed: value}), with a Student-t 95 % half-width and the pairs."""
+    common = sorted(set(a) & set(b))
+    if not common:
+        return None
+    m, h = mean_ci([a[k] - b[k] for k in common])
+    return m, h, len(common)
+
+
 def summary(out):
     finals = json.loads((out / "finals.json").read_text())
     base = finals["picks"]["base"]
@@ -417,6 +431,14 @@ def cmd_report(a):
             "final fitness with a Welch 95 % interval (negative: the first is better). Wall time: the tuning run "
             "start to end; CPU time: its process and everything it waited for (R, target runners, simulation "
             "threads), which other work on the machine disturbs less.\n")
+    same = [t for t in order if t in SAME_GENERATIONS and lead == "swarmpath-cmaes"]
+    pairs = {t: paired(dict(zip(rows[lead]["seeds"], rows[lead]["fitness"])),
+                       dict(zip(rows[t]["seeds"], rows[t]["fitness"]))) for t in same}
+    pairs = {t: p for t, p in pairs.items() if p}
+    if pairs:
+        note += (f"\nVariants that change only the pick (their generations are {lead}'s, seed by seed), {lead} - "
+                 "variant paired by tuner seed (Student-t 95 %; positive: the variant is better): " +
+                 "; ".join(f"{t} {m:+.3f} +- {h:.3f} ({n} seeds)" for t, (m, h, n) in pairs.items()) + ".\n")
     kept_note = "; ".join(f"{t} {k} of {len(rows[t]['fitness'])}" for t, k in kept.items() if k)
     if kept_note:
         note += f"\nPicks that are the base params (keep_base: no finalist beat them on the fresh runs): {kept_note}.\n"

@@ -153,3 +153,14 @@ def test_crn_variant_and_a_second_problem_in_its_own_folder(sp, tmp_path):
 
     assert c.default_out("bench/tuners/problem.toml") == "results/tuners"
     assert c.default_out("bench/tuners/problem-naive.toml") == "results/tuners-naive"
+
+
+def test_paired_differences_use_the_tuner_seeds_both_ran():
+    sys.path.insert(0, str(SOURCE / "bench/tuners"))
+    import compare
+
+    # seeds 1 and 2 in common: differences 0.10 and 0.02, mean 0.06, sd 0.0566, t(1) 12.706
+    m, h, n = compare.paired({1: 0.9, 2: 0.8, 3: 0.85}, {1: 0.8, 2: 0.78, 4: 0.7})
+    assert n == 2 and abs(m - 0.06) < 1e-12 and abs(h - 12.706 * 0.04) < 1e-9
+    assert compare.paired({1: 1.0}, {2: 1.0}) is None
+    assert all(t in compare.VARIANTS for t in compare.SAME_GENERATIONS)
