@@ -117,7 +117,8 @@ TEST(MeanFinalist, TheMeanTakesTheLastFinalistsPlaceAndCanBeThePick) {
   EXPECT_FALSE(on.selection.base_kept);
   EXPECT_NEAR(on.pick().w_away, 0.4, 1e-12);
   const std::string toml = read_text(on_dir / "best.toml");
-  EXPECT_NE(toml.find("# CMA-ES's distribution mean after generation 1 (mean_finalist; never simulated"), std::string::npos)
+  EXPECT_NE(toml.find("# CMA-ES's distribution mean after generation 1 (mean_finalist; never simulated"),
+            std::string::npos)
       << toml;
   const nlohmann::json j = nlohmann::json::parse(read_text(on_dir / "run.json"));
   const nlohmann::json& fin = j.at("finalists");
