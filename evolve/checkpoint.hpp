@@ -58,8 +58,8 @@ struct Elite {
   int candidate = 0;  ///< index in its generation's batch; kDistributionMean for the optimiser's mean
 };
 
-/// Elite::candidate of a finalist that is the optimiser's distribution mean after `generation`
-/// generations ([reevaluate] mean_finalist): never simulated during the run, so its stats are empty.
+/// Elite::candidate of a finalist that is the optimiser's distribution mean after generation
+/// `generation`, the last ([reevaluate] mean_finalist): never simulated, so its stats are empty.
 inline constexpr int kDistributionMean = -1;
 
 /// Where a finalist came from, for its row and header: "generation 3, candidate 5" or
