@@ -25,6 +25,8 @@ base params as its starting point:
                           seeds (common random numbers), as Optuna's CMA-ES runs.
   swarmpath-cmaes-mean    `[reevaluate] mean_finalist = true`: the last finalist is CMA-ES's
                           distribution mean after the last generation.
+  swarmpath-cmaes-mean-only  the mean as the only finalist (top_k 1) with the base params on the
+                          fresh runs of all the finalists (one-finalist's split).
   irace                   `swarmpath irace` scenario, irace's seed = tuner seed, maxExperiments =
                           the budget; the pick is irace's best (elite 1), `swarmpath irace import`.
   optuna-<sampler>        examples/optuna_tune.py's study: budget / runs-per-trial trials, every
@@ -80,12 +82,16 @@ VARIANTS = {
     # the last finalist is CMA-ES's distribution mean after the last generation instead of the next-best
     # candidate (evolve/README.md, mean_finalist): the same generations and fresh runs
     "swarmpath-cmaes-mean": ("cmaes", {"reevaluate": ["mean_finalist = true"]}),
+    # the mean as the only finalist, on the fresh runs that the finalists and the base params share: one
+    # keep_base test of more pairs with no Bonferroni split, of a candidate no run's luck chose
+    "swarmpath-cmaes-mean-only": ("cmaes", {"reevaluate": ["mean_finalist = true",
+                                                           lambda body: one_finalist(body)]}),
 }
 
 # the variants that change only how swarmpath-cmaes picks among what its generations found: with the same
 # tuner seed their generations are swarmpath-cmaes's bit for bit, so the report pairs them seed by seed
 SAME_GENERATIONS = ("swarmpath-cmaes-finalist", "swarmpath-cmaes-one-finalist", "swarmpath-cmaes-race-base",
-                    "swarmpath-cmaes-mean")
+                    "swarmpath-cmaes-mean", "swarmpath-cmaes-mean-only")
 
 
 def one_finalist(body):
