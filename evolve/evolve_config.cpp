@@ -444,6 +444,14 @@ void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string
     t->fail("keep_base_level", "applies only with keep_base = true: remove it or set keep_base = true");
   }
   r.keep_base_level = number_in(*t, "keep_base_level", r.keep_base_level, 1e-6, 0.5);
+  if (!r.keep_base && t->has("keep_base_test")) {
+    t->fail("keep_base_test", "applies only with keep_base = true: remove it or set keep_base = true");
+  }
+  const std::string test = t->string_or("keep_base_test", "t");
+  if (test != "t" && test != "signed-rank") {
+    t->fail("keep_base_test", "unknown test \"" + test + "\" (choices: t, signed-rank)");
+  }
+  r.keep_base_test = test == "signed-rank" ? KeepBaseTest::kSignedRank : KeepBaseTest::kPairedT;
   r.mean_finalist = t->boolean_or("mean_finalist", r.mean_finalist);
   if (r.mean_finalist && c.optimizer.name != "cmaes") {
     t->fail("mean_finalist", "the distribution mean is CMA-ES's (optimizer name = \"cmaes\"), not " +
@@ -655,6 +663,8 @@ nlohmann::ordered_json config_json(const EvolveConfig& c) {
   if (!c.multi_objective() && !c.reevaluate.keep_base) j["reevaluate"]["keep_base"] = false;
   if (c.reevaluate.keep_base && c.reevaluate.keep_base_level != Reevaluation{}.keep_base_level)
     j["reevaluate"]["keep_base_level"] = c.reevaluate.keep_base_level;
+  if (c.reevaluate.keep_base && c.reevaluate.keep_base_test == KeepBaseTest::kSignedRank)
+    j["reevaluate"]["keep_base_test"] = "signed-rank";  // only when not the t-test: hash kept
   if (c.multi_objective()) {
     nlohmann::ordered_json use = nlohmann::ordered_json::array();
     for (const ObjectiveKind k : c.multi.objectives) use.push_back(std::string(objective_name(k)));

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "evolve/base_selection.hpp"
 #include "evolve/fitness.hpp"
 #include "evolve/genome.hpp"
 #include "evolve/optim/optimizer.hpp"
@@ -81,6 +82,7 @@ struct Reevaluation {
   /// Single-objective runs only (a multi-objective run reports its whole front).
   bool keep_base = true;
   double keep_base_level = 0.05;  ///< the family-wise level of that test (split over the finalists)
+  KeepBaseTest keep_base_test = KeepBaseTest::kPairedT;  ///< that test: paired t or signed-rank
   /// The last of the top_k finalists is CMA-ES's distribution mean after the last generation
   /// (Optimizer::recommended_x), never simulated during the run, instead of the top_k-th best
   /// candidate by generation mean. CMA-ES only; the same simulations.

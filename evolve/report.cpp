@@ -104,8 +104,10 @@ namespace {
 
 // keep_base's test in one sentence of the header
 void selection_line(std::ostream& h, const BaseSelection& s) {
-  h << "# Paired test on the same fresh runs (keep_base): base minus finalist "
-    << short_text(s.mean_difference) << " +- " << short_text(s.sd_difference) << " (sd) over " << s.pairs
+  h << "# Paired "
+    << (s.test == KeepBaseTest::kSignedRank ? "signed-rank test (W+ = " + short_text(s.w_plus) + ")" : "test")
+    << " on the same fresh runs (keep_base): base minus finalist " << short_text(s.mean_difference) << " +- "
+    << short_text(s.sd_difference) << " (sd) over " << s.pairs
     << " runs, one-sided p = " << short_text(s.p_value) << (s.base_kept ? " >= " : " < ")
     << short_text(s.threshold) << " (level " << short_text(s.level) << " / " << s.finalists
     << " finalists).\n";
@@ -309,6 +311,10 @@ nlohmann::ordered_json run_json(const EvolveConfig& c, const RunResult& r, int t
                       {"sd_difference", s.sd_difference},
                       {"t", s.t},
                       {"p_value", s.p_value}};
+    if (s.test == KeepBaseTest::kSignedRank) {  // only then: the files of t-test runs unchanged
+      j["selection"]["test"] = "signed-rank";
+      j["selection"]["w_plus"] = s.w_plus;
+    }
   } else {
     j["selection"] = {{"keep_base", false}, {"base_kept", false}};
   }

@@ -454,7 +454,7 @@ RunResult run_evolution(const EvolveConfig& c, const CaseObjective& f, const Run
     base_runs.resize(std::min(base_runs.size(), training_fitness(*best).size()));  // a dropped one's blocks
     result.selection =
         select_against_base(training_fitness(*best), base_runs, static_cast<int>(result.finalists.size()),
-                            c.reevaluate.keep_base_level);
+                            c.reevaluate.keep_base_level, c.reevaluate.keep_base_test);
     result.selection.finalist = *best;
     if (every_finalist_dropped) result.selection.base_kept = true;
     note(result.selection.base_kept

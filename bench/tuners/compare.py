@@ -27,6 +27,7 @@ base params as its starting point:
                           distribution mean after the last generation.
   swarmpath-cmaes-mean-only  the mean as the only finalist (top_k 1) with the base params on the
                           fresh runs of all the finalists (one-finalist's split).
+  swarmpath-cmaes-rank, -mean-only-rank  those two with keep_base_test = "signed-rank".
   irace                   `swarmpath irace` scenario, irace's seed = tuner seed, maxExperiments =
                           the budget; the pick is irace's best (elite 1), `swarmpath irace import`.
   optuna-<sampler>        examples/optuna_tune.py's study: budget / runs-per-trial trials, every
@@ -86,12 +87,18 @@ VARIANTS = {
     # keep_base test of more pairs with no Bonferroni split, of a candidate no run's luck chose
     "swarmpath-cmaes-mean-only": ("cmaes", {"reevaluate": ["mean_finalist = true",
                                                            lambda body: one_finalist(body)]}),
+    # keep_base's decision by the signed-rank test (ranks, not sizes: one failed run is one pair lost), with
+    # the problem's finalists and with the mean alone
+    "swarmpath-cmaes-rank": ("cmaes", {"reevaluate": ['keep_base_test = "signed-rank"']}),
+    "swarmpath-cmaes-mean-only-rank": ("cmaes", {"reevaluate": ["mean_finalist = true", lambda body: one_finalist(body),
+                                                                'keep_base_test = "signed-rank"']}),
 }
 
 # the variants that change only how swarmpath-cmaes picks among what its generations found: with the same
 # tuner seed their generations are swarmpath-cmaes's bit for bit, so the report pairs them seed by seed
 SAME_GENERATIONS = ("swarmpath-cmaes-finalist", "swarmpath-cmaes-one-finalist", "swarmpath-cmaes-race-base",
-                    "swarmpath-cmaes-mean", "swarmpath-cmaes-mean-only")
+                    "swarmpath-cmaes-mean", "swarmpath-cmaes-mean-only", "swarmpath-cmaes-rank",
+                    "swarmpath-cmaes-mean-only-rank")
 
 
 def one_finalist(body):

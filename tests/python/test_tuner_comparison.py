@@ -89,7 +89,7 @@ def test_keep_base_counts_the_base_params_and_the_finalist_variant_spends_the_sa
 def test_variants_of_the_pick_spend_the_same_budget(sp, tmp_path):
     out = str(tmp_path / "tuners")
     tuners = ("swarmpath-cmaes-sigma015", "swarmpath-cmaes-one-finalist", "swarmpath-cmaes-race-base",
-              "swarmpath-cmaes-mean", "swarmpath-cmaes-mean-only")
+              "swarmpath-cmaes-mean", "swarmpath-cmaes-mean-only", "swarmpath-cmaes-mean-only-rank")
     compare("run", "--out", out, "--tuners", ",".join(tuners), "--seeds", "1", "--threads", "1")
     config = {t: open(os.path.join(out, "configs", f"{t}-s1.toml")).read() for t in tuners}
     assert "[optimizer]\nsigma0 = 0.15\n" in config["swarmpath-cmaes-sigma015"]  # tiny_tune has none: added
@@ -111,6 +111,10 @@ def test_variants_of_the_pick_spend_the_same_budget(sp, tmp_path):
     assert "[reevaluate]\nmean_finalist = true\ntop_k = 1\nseeds = 3\n" in config["swarmpath-cmaes-mean-only"]
     run = json.loads(open(os.path.join(out, "runs", "swarmpath-cmaes-mean-only-s1", "evolve", "run.json")).read())
     assert [f["distribution_mean"] for f in run["finalists"]] == [True]
+    # and with keep_base's signed-rank test, which run.json names
+    assert 'keep_base_test = "signed-rank"' in config["swarmpath-cmaes-mean-only-rank"]
+    run = json.loads(open(os.path.join(out, "runs", "swarmpath-cmaes-mean-only-rank-s1", "evolve", "run.json")).read())
+    assert run["selection"]["test"] == "signed-rank"
 
 
 def test_crn_variant_and_a_second_problem_in_its_own_folder(sp, tmp_path):
