@@ -32,6 +32,7 @@ const std::array kAdditions{
   // forming a subgoal
   Addition{"backoff_trail", "forming robots back off along their own way out", "§2.3 #5", kBoth, {{{"backoff_trail", 0}}}, {}},
   Addition{"retarget_nearer", "a forming robot re-targets to a RED nearer the nest", "§2.3 #5r", kBoth, {{{"retarget_nearer", 0}}}, {}},
+  Addition{"retarget_tip", "a forming robot re-targets only to a tip of the chain", "§2.3 #5r", kBoth, {{{"retarget_tip", 0}}}, {"retarget_nearer"}},
   Addition{"subgoal_nestward", "subgoals form only nearer the nest than their target", "§2.3 #5, #6b", kBoth, {{{"subgoal_nestward", 0}}}, {}},
   Addition{"form_retries", "a robot that lost its target goes home and tries again", "§2.3 #7, #8b", kBoth, {{{"form_retries", 0}}}, {}},
   Addition{"T_leaf", "a RED leaf nobody extends leaves the chain and goes home", "§2.3 #21", kBoth, {{{"T_leaf", 0}}}, {}},

@@ -103,6 +103,7 @@ struct Params {
   bool spot_on_way = false;      ///< the spot: where its way out first came that near the target
   bool way_after_edge = false;   ///< spot_on_way: only a way that followed an obstacle's edge
   bool tip_by_links = false;     ///< row #5r: re-target to the target's child (by links), not by distance
+  bool retarget_tip = true;      ///< row #5r: re-target only to a RED no RED in view names as its parent
   bool link_outward = false;     ///< rows #5, #6b on its trail: stop if the target is the nearest chain light
   double form_retries = 3;       ///< rows #7, #8b: a robot losing its target goes home, this often
   double t_leaf = 1500;          ///< row #21: a RED leaf nobody names this long goes home [ticks]

@@ -172,6 +172,14 @@ void remember_sighting(const Percept& in, Vec2 nest, const PfSight& sight, PfMem
   }
 }
 
+// R (retarget_tip): another RED light in view names this one as its parent: a link inside the chain
+bool named_as_parent(const Percept& in, int emitter) {
+  for (const Blob& o : in.blobs) {
+    if (o.color == Led::kRed && o.emitter >= 0 && o.emitter != emitter && o.tag == emitter) return true;
+  }
+  return false;
+}
+
 // while forming: the free RED subgoal in view that lies nearest the nest, if it is nearer than the
 // target (the chain's tip, so that the new subgoal extends it)
 const Blob* red_nearer_nest(const Percept& in, const Params& p, Vec2 nest, const PfMemory& m,
@@ -189,9 +197,13 @@ const Blob* red_nearer_nest(const Percept& in, const Params& p, Vec2 nest, const
   constexpr double kMargin = 0.2;  // [m]
   double best = dist(m.target.last_seen, nest) - kMargin;
   const Blob* found = nullptr;
+  // R (retarget_tip): where the chain bends away from the nest, a link inside it lies nearer the nest
+  // than its tip; only the tips (no RED light in view names them as parent) extend the chain
+  const bool tips_only = p.retarget_tip && p.neighbour_id == NeighbourId::kVisionId;
   for (const Blob& b : in.blobs) {
     if (b.color != Led::kRed || b.emitter == m.target.id) continue;
     if (claims.has(b.emitter)) continue;
+    if (tips_only && b.emitter >= 0 && named_as_parent(in, b.emitter)) continue;
     const double to_nest = dist(blob_position(in.pose, b), nest);
     if (to_nest < best) {
       best = to_nest;

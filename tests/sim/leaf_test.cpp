@@ -52,7 +52,9 @@ Outcome run_fan(const Params& p) {
 // the rule the run ends at T_max with its RED robots in a fan of branches (docs/detours-wall-gap-1-*.svg);
 // with T_leaf the leaves nobody extends leave, come back, and the path forms
 TEST(Leaf, LeavesNobodyExtendsLeaveTheFanAndThePathForms) {
-  const Params on;  // the default: T_leaf = 1500
+  Params on;  // the default: T_leaf = 1500
+  on.retarget_tip =
+      false;  // as measured: with it the fan's robots keep to its tips and the path forms without T_leaf
   Params off = on;
   off.t_leaf = 0;
   const Outcome without = run_fan(off);

@@ -147,8 +147,9 @@ TEST(PfRun, RobotsThatFindTheGoalFromItsFarSideDoNotPileUpRoundIt) {
   // 30 cm seed 3 fails either way, its formation broken by recovery robots round the goal)
   Params far_spot;
   far_spot.trap_progress = 5;
-  far_spot.form_retries = 0;  // and robots that lose their target turn RECOVERY, as they did then
-  far_spot.t_leaf = 0;        // and RED robots round the goal stay there (T_leaf thins that crowd too)
+  far_spot.form_retries = 0;      // and robots that lose their target turn RECOVERY, as they did then
+  far_spot.t_leaf = 0;            // and RED robots round the goal stay there (T_leaf thins that crowd too)
+  far_spot.retarget_tip = false;  // and row #5r re-targets by the distance to the nest alone
   Params trail_only = far_spot;
   trail_only.backoff_far_spot = false;
   trail_only.trail_slack = 3000;  // stopping anywhere on the way home (3000 cm: no bound)

@@ -353,6 +353,36 @@ TEST(PfTable, Row5rTipByLinksRetargetsToTheTargetsChild) {
   EXPECT_EQ(m.form_leg, FormLeg::kToTarget);
 }
 
+// R: retarget_tip (docs/detours.md). Where the chain bends away from the nest (round a wall's end) a
+// link inside it lies nearer the nest than its tip: a forming robot re-targets only to a RED that no
+// RED light in view names as its parent, so that it is not drawn back into the chain from its tip.
+TEST(PfTable, Row5rRetargetTipSkipsALinkInsideTheChain) {
+  const auto reading = [](bool tip_in_view) {
+    Reading r;
+    r.add(Led::kRed, 7, 0, 30, 8);                     // the target, a tip: its light names 8 as its parent
+    r.add(Led::kRed, 8, 180, 60, 6);                   // 0.9 m nearer the nest, inside the chain (7 names it)
+    if (tip_in_view) r.add(Led::kRed, 9, 135, 60, 8);  // another tip, 0.7 m nearer the nest
+    return r;
+  };
+  Params off;
+  off.retarget_tip = false;
+  PfMemory m = forming({0.30, 0.0});
+  EXPECT_EQ(fire(m, reading(false), off), "#5r");
+  EXPECT_EQ(m.target.id, 8);  // drawn back into the chain
+  Params on;                  // the default
+  ASSERT_TRUE(on.retarget_tip);
+  m = forming({0.30, 0.0});
+  EXPECT_EQ(fire(m, reading(false), on), "");  // keeps its tip
+  EXPECT_EQ(m.target.id, 7);
+  m = forming({0.30, 0.0});
+  EXPECT_EQ(fire(m, reading(true), on), "#5r");
+  EXPECT_EQ(m.target.id, 9);                   // a tip nearer the nest still draws it
+  on.neighbour_id = NeighbourId::kVisionOnly;  // without ids no light names a parent: as off
+  m = forming({0.30, 0.0});
+  EXPECT_EQ(fire(m, reading(false), on), "#5r");
+  EXPECT_EQ(m.target.id, 8);
+}
+
 TEST(PfTable, Row5rRetargetsToTheSubgoalNearerTheNest) {  // label c while forming
   PfMemory m = forming({0.30, 0.0});
   Reading r;
