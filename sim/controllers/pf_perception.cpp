@@ -203,12 +203,12 @@ const Blob* red_nearer_nest(const Percept& in, const Params& p, Vec2 nest, const
   for (const Blob& b : in.blobs) {
     if (b.color != Led::kRed || b.emitter == m.target.id) continue;
     if (claims.has(b.emitter)) continue;
-    if (tips_only && b.emitter >= 0 && named_as_parent(in, b.emitter)) continue;
     const double to_nest = dist(blob_position(in.pose, b), nest);
-    if (to_nest < best) {
-      best = to_nest;
-      found = &b;
-    }
+    if (to_nest >= best) continue;
+    // R (retarget_tip): asked only of a RED that would win
+    if (tips_only && b.emitter >= 0 && named_as_parent(in, b.emitter)) continue;
+    best = to_nest;
+    found = &b;
   }
   return found;
 }
