@@ -39,7 +39,8 @@ SensorNeeds sensor_needs(Mode m, const Params& p) {
 }
 
 bool robot_listens(Mode m, const Params& p, const RobotMemory& mem, std::int64_t tick) {
-  if (m == Mode::kPathFormation) return listens_for_sighting(p, mem.pf, tick);  // share_sighting [R]
+  if (m == Mode::kPathFormation)  // share_sighting, share_way [R]
+    return listens_for_sighting(p, mem.pf, tick) || listens_for_way(p, mem.pf);
   if (m != Mode::kTaskAllocation) return true;  // the world's needs.rab decides
   return mem.ta.state == TaState::kScout || mem.ta.state == TaState::kGoalFounder ||
          mem.ta.state == TaState::kDecisionMaker || claims_links(p, mem.pf) ||

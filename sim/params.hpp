@@ -108,6 +108,9 @@ struct Params {
   double form_retries = 3;       ///< rows #7, #8b: a robot losing its target goes home, this often
   double t_leaf = 1500;          ///< row #21: a RED leaf nobody names this long goes home [ticks]
   bool leaf_in_fan = false;      ///< row #21: T_leaf counts only while another branch is in view
+  bool walk_way =
+      false;  ///< site_fidelity: a trip to the sighting walks the way it was seen from, from the start
+  bool share_way = false;          ///< share_sighting: the teller tells its own way there, corner by corner
   bool route_to_sighting = false;  ///< site_fidelity: travel to the sighting along the way it was seen from
   double share_sighting = 300;  ///< pf: robots this near the nest tell where they saw the chain [cm] (0: off)
   double share_after = 15000;   ///< share_sighting: telling begins at this tick of the run [ticks]

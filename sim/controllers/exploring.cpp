@@ -6,6 +6,7 @@
 #include "forming.hpp"
 #include "navigation.hpp"
 #include "path_formation.hpp"
+#include "sighting_share.hpp"
 #include "sim/controller.hpp"
 #include "sim/motion.hpp"
 #include "units.hpp"
@@ -124,8 +125,16 @@ bool travel_to_sighting(const Percept& in, const Params& p, RobotMemory& mem, co
     nav_reset(mem.nav);
     return false;
   }
+  // R (walk_way: task allocation; share_way: path formation): a way to the sighting, its own or one
+  // heard whole, is walked from the start
+  const bool walk_way = (p.share_way || (p.walk_way && m.role != PfRole::kSwarm)) && m.knows_way;
+  if (walk_way && !mem.route.begun_for(m.trip_start, m.sighting)) {
+    mem.route.set_trip(m.trip_start, m.sighting);
+    mem.route.begin(in.pose.p, m.sighting, p.r_vis * kCm + kWaySlack, dist(in.pose.p, mem.nest));
+    nav_reset(mem.nav);
+  }
   Vec2 f;
-  if (p.route_to_sighting && mem.route.begun_for(m.trip_start, m.sighting)) {
+  if ((p.route_to_sighting || walk_way) && mem.route.begun_for(m.trip_start, m.sighting)) {
     f = nav_route(in, p, mem.nav, mem.rng, mem.route, m.sighting, in_crowd);
   } else {
     f = nav_toward(in, p, mem.nav, mem.rng, m.sighting, in_crowd);

@@ -147,8 +147,17 @@ void enter(const Percept& in, const Params& p, RobotMemory& mem, PfState to) {
   m.explore_leg = ExploreLeg::kWalk;
   if (to == PfState::kReturnToNest && !m.sighted_this_trip) m.has_sighting = false;  // a stale lead
   if (to == PfState::kResting && !m.has_sighting) ++m.fruitless_trips;  // home without a sighting
-  // R (route_to_sighting): the way out of a trip that saw the chain, for the next trip to it
-  if (p.route_to_sighting && to == PfState::kReturnToNest && m.has_sighting) mem.route.keep(mem.trail);
+  // R (route_to_sighting, walk_way, share_way): the way out of a trip that saw the chain, for the next trip
+  // to it and to tell; a way heard from another robot is done with once the trip it led is over
+  if (to == PfState::kReturnToNest) {
+    m.told = ToldWay{};
+    m.knows_way = false;
+    if ((p.route_to_sighting || p.walk_way || p.share_way) && m.has_sighting) {
+      mem.route.keep(mem.trail);
+      m.knows_way = true;
+      m.tell_count = -1;
+    }
+  }
   if (to == PfState::kExploring) {
     // a new trip: head for the last sighting (site fidelity), else keep the random heading
     m.sighted_this_trip = false;
@@ -207,7 +216,12 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   PfMemory& m = mem.pf;
   PfSight sight;
   pf_perceive(in, p, mem.nest, m, sight);
-  if (listens_for_sighting(p, m, in.tick)) hear_sighting(in.rab, mem.nest, m);  // share_sighting [R]
+  if (listens_for_sighting(p, m, in.tick)) hear_sighting(in.rab, mem.nest, m);        // share_sighting [R]
+  if (listens_for_way(p, m) && hear_way(in.rab, mem.nest, m) && m.told.complete()) {  // share_way [R]
+    mem.route.assign(std::span<const Vec2>(m.told.corners.data(), static_cast<std::size_t>(m.told.count)));
+    m.knows_way = true;
+    m.tell_count = -1;
+  }
   if (m.state == PfState::kSubgoalForming) next_form_leg(in, p, m);
   sight.may_form = !p.form_one_at_a_time || m.state != PfState::kExploring || sight.lure == nullptr ||
                    mem.rng.bernoulli(p.p_form);
@@ -218,7 +232,10 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   mem.state = static_cast<std::uint8_t>(m.state);
   Command cmd = act(in, p, mem, sight);
   advertise_links(in, p, m, cmd);
-  if (tells_sighting(p, m, sight.nest_distance_cm, in.tick)) tell_sighting(in.id, mem.nest, m, cmd);
+  work_out_way(p, mem.route, m);
+  if (tells_sighting(p, m, sight.nest_distance_cm, in.tick) &&
+      !tell_way(in.id, mem.nest, p, mem.route, m, in.tick, cmd))
+    tell_sighting(in.id, mem.nest, m, cmd);
   return cmd;
 }
 

@@ -92,6 +92,17 @@ struct Claimants {
 /// Longest chain of followers behind a guiding founder; beyond it a light is no guide.
 inline constexpr int kMaxGuideHops = 30;
 
+/// share_way [R]: the corners of another robot's way to the sighting it told, as they are heard.
+struct ToldWay {
+  static constexpr int kMax = 16;  ///< corners a way is told in
+  int teller = kNobody;            ///< the robot whose sighting was taken (kNobody: none)
+  int count = 0;                   ///< corners it tells (0: none heard yet)
+  std::uint32_t heard = 0;         ///< bit i: corner i heard
+  std::array<Vec2, kMax> corners{};
+
+  bool complete() const { return count > 0 && heard == (std::uint32_t{1} << count) - 1U; }
+};
+
 /// The path-formation memory of one robot.
 struct PfMemory {
   PfState state = PfState::kExploring;
@@ -109,6 +120,11 @@ struct PfMemory {
   std::int64_t travel_ticks = 0;   ///< ticks spent travelling (to the sighting, following): not budget
   std::int64_t trip_start = 0;     ///< the tick this exploration trip began (TA t_source = elapsed)
   int fruitless_trips = 0;         ///< trips that ended back home without a sighting (share_after_trips)
+  bool knows_way = false;  ///< share_way: its route is a way to the sighting (its own, or heard whole)
+  int tell_count = -1;     ///< share_way: corners of that way in tell_corners (-1: not worked out)
+  Vec2 tell_for;           ///< share_way: the sighting they were worked out for [m]
+  std::array<Vec2, ToldWay::kMax> tell_corners{};  ///< share_way: the way it tells, corner by corner
+  ToldWay told;                    ///< share_way: the way heard from the robot that told the sighting
   std::int64_t guide_unseen = 0;   ///< guided_departure: consecutive ticks a follower has seen no guide
   int guide_hops = kMaxGuideHops;  ///< guided_departure: hops to the founder, advertised with the light
   int answering = -1;  ///< recruit_call: the calling subgoal this robot goes to (claimed on the medium)

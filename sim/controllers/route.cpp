@@ -1,12 +1,95 @@
 // SPDX-License-Identifier: MIT
 #include "route.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace swarmpath::sim {
 
 namespace {
-constexpr double kPassed = 0.25;  // [m] a crumb this near is passed (the trail's spacing)
-constexpr int kLookAhead = 8;     // crumbs ahead checked for a short cut
+constexpr double kPassed = 0.25;    // [m] a crumb this near is passed (the trail's spacing)
+constexpr int kLookAhead = 8;       // crumbs ahead checked for a short cut
+constexpr double kCornerTol = 0.1;  // [m] a crumb this near the line between kept neighbours is dropped
+
+// distance from `p` to the segment a-b [m]
+double to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return dist(p, a + t * ab);
+}
+
+// Douglas-Peucker over crumbs [0, n): marks in `keep` the crumbs farther than `tol` from the line
+// between the kept ones around them (an explicit stack of spans, no recursion, no allocation)
+int simplify(const std::array<Vec2, Trail::kCapacity>& c, int n, double tol,
+             std::array<bool, Trail::kCapacity>& keep) {
+  std::fill(keep.begin(), keep.end(), false);
+  keep[0] = true;
+  keep[static_cast<std::size_t>(n - 1)] = true;
+  std::array<std::array<int, 2>, Trail::kCapacity> stack{};
+  int top = 0;
+  stack[0] = {0, n - 1};
+  ++top;
+  while (top > 0) {
+    const auto [a, b] = stack[static_cast<std::size_t>(--top)];
+    double worst = tol;
+    int at = -1;
+    for (int i = a + 1; i < b; ++i) {
+      const double d = to_segment(c[static_cast<std::size_t>(i)], c[static_cast<std::size_t>(a)],
+                                  c[static_cast<std::size_t>(b)]);
+      if (d > worst) {
+        worst = d;
+        at = i;
+      }
+    }
+    if (at < 0) continue;
+    keep[static_cast<std::size_t>(at)] = true;
+    stack[static_cast<std::size_t>(top++)] = {a, at};
+    stack[static_cast<std::size_t>(top++)] = {at, b};
+  }
+  return static_cast<int>(std::count(keep.begin(), keep.begin() + n, true));
+}
+
 }  // namespace
+
+void Route::assign(std::span<const Vec2> points) {
+  count_ = static_cast<int>(std::min<std::size_t>(points.size(), Trail::kCapacity));
+  for (int i = 0; i < count_; ++i) crumbs_[static_cast<std::size_t>(i)] = points[static_cast<std::size_t>(i)];
+  next_ = 0;
+  end_ = 0;
+  trip_ = -1;
+}
+
+int Route::nearest_within(Vec2 to, double seen) const {
+  int last = -1;
+  double best = seen;
+  for (int i = 0; i < count_; ++i) {
+    const double d = dist(crumbs_[static_cast<std::size_t>(i)], to);
+    if (d <= best) {
+      best = d;
+      last = i;
+    }
+  }
+  return last;
+}
+
+int Route::corners(Vec2 to, double seen, std::span<Vec2> out) const {
+  const int last = nearest_within(to, seen);
+  if (last < 0 || out.empty()) return 0;
+  const int n = last + 1;
+  if (n == 1 || out.size() == 1) {
+    out[0] = crumbs_[static_cast<std::size_t>(last)];
+    return 1;
+  }
+  std::array<bool, Trail::kCapacity> keep{};
+  double tol = kCornerTol;
+  while (simplify(crumbs_, n, tol, keep) > static_cast<int>(out.size())) tol *= 2.0;
+  int k = 0;
+  for (int i = 0; i < n; ++i)
+    if (keep[static_cast<std::size_t>(i)])
+      out[static_cast<std::size_t>(k++)] = crumbs_[static_cast<std::size_t>(i)];
+  return k;
+}
 
 void Route::keep(const Trail& trail) {
   count_ = trail.size();
@@ -19,15 +102,7 @@ void Route::keep(const Trail& trail) {
 bool Route::begin(Vec2 p, Vec2 to, double seen, double along) {
   next_ = 0;
   end_ = 0;
-  int last = -1;
-  double best = seen;
-  for (int i = 0; i < count_; ++i) {
-    const double d = dist(crumbs_[static_cast<std::size_t>(i)], to);
-    if (d <= best) {
-      best = d;
-      last = i;
-    }
-  }
+  const int last = nearest_within(to, seen);
   if (last < 0) return false;
   int first = 0;
   double nearest = 1e18;

@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 
 #include "trail.hpp"
 
@@ -16,6 +17,16 @@ class Route {
   /// Keeps the trail's crumbs, from the nest outward (the trail's remaining crumbs: a way home that
   /// has been walked in part leaves the crumbs nearer the nest).
   void keep(const Trail& trail);
+
+  /// Replaces the kept crumbs with `points` (a way told by another robot [R share_way], from the nest
+  /// outward; at most kCapacity are kept).
+  void assign(std::span<const Vec2> points);
+
+  /// The way from its start to the kept crumb nearest `to` within `seen` of it, as at most
+  /// `out.size()` corners into `out` (the crumbs that stay when the straight stretches between them
+  /// are dropped, within 10 cm; wider when that leaves too many): the first and the last crumb always
+  /// stay. Returns how many; 0 when no crumb lies within `seen` of `to`.
+  int corners(Vec2 to, double seen, std::span<Vec2> out) const;
 
   /// Begins a way from `p` to `to`: it ends at the kept crumb nearest `to` when that lies within
   /// `seen` of it (the robot saw it from there), and starts at the crumb nearest `p` before that end
@@ -49,6 +60,9 @@ class Route {
   int size() const { return count_; }
 
  private:
+  // the kept crumb nearest `to` within `seen` of it (-1: none)
+  int nearest_within(Vec2 to, double seen) const;
+
   std::array<Vec2, Trail::kCapacity> crumbs_{};
   int count_ = 0;
   int next_ = 0;  // the next crumb to walk to

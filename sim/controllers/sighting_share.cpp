@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 #include "sighting_share.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -11,8 +12,24 @@ namespace swarmpath::sim {
 namespace {
 
 // payload: byte 0 the sender's id, byte 1 this mark, bytes 2-5 and 6-9 the sighting's x and y
-// relative to the nest in cm (signed 32-bit, little-endian). Path formation sends no other message.
+// relative to the nest in cm (signed 32-bit, little-endian).
 constexpr std::uint8_t kSightingMark = 0x53;
+// share_way: byte 0 the sender's id, byte 1 this mark, byte 2 the corner's index, byte 3 how many
+// corners, bytes 4-5 and 6-7 the corner's x and y relative to the nest in cm (signed 16-bit,
+// little-endian: 327 m either way). Path formation sends no other message.
+constexpr std::uint8_t kWayMark = 0x57;
+
+void put_i16(RabPayload& b, std::size_t at, double v) {
+  const auto u =
+      static_cast<std::uint16_t>(static_cast<std::int16_t>(std::clamp(std::lround(v), -32767L, 32767L)));
+  b[at] = static_cast<std::uint8_t>(u & 0xffU);
+  b[at + 1] = static_cast<std::uint8_t>(u >> 8);
+}
+
+double get_i16(const RabPayload& b, std::size_t at) {
+  const auto u = static_cast<std::uint16_t>(b[at] | (b[at + 1] << 8));
+  return static_cast<double>(static_cast<std::int16_t>(u));
+}
 
 void put_i32(RabPayload& b, std::size_t at, std::int32_t v) {
   const auto u = static_cast<std::uint32_t>(v);
@@ -34,7 +51,7 @@ bool may_tell(const Params& p, const PfMemory& m, std::int64_t tick) {
 
 bool tells_sighting(const Params& p, const PfMemory& m, double nest_distance_cm, std::int64_t tick) {
   return p.share_sighting > 0.0 && may_tell(p, m, tick) && m.role == PfRole::kSwarm && m.has_sighting &&
-         nest_distance_cm <= p.share_sighting &&
+         (!p.share_way || (m.knows_way && m.tell_count > 0)) && nest_distance_cm <= p.share_sighting &&
          (m.state == PfState::kResting || m.state == PfState::kReturnToNest ||
           m.state == PfState::kExploring);
 }
@@ -69,7 +86,59 @@ bool hear_sighting(std::span<const RabMessage> inbox, Vec2 nest, PfMemory& m) {
   m.sighting = nest + kCm * rel;
   m.has_sighting = true;
   m.sighted_this_trip = false;
+  m.knows_way = false;
+  m.told = ToldWay{};
+  m.told.teller = best->sender;
   return true;
+}
+
+void work_out_way(const Params& p, const Route& route, PfMemory& m) {
+  if (!p.share_way || !m.knows_way) return;
+  if (m.tell_count < 0 || m.tell_for.x != m.sighting.x || m.tell_for.y != m.sighting.y) {
+    m.tell_count = route.corners(m.sighting, p.r_vis * kCm + kWaySlack, m.tell_corners);
+    m.tell_for = m.sighting;
+  }
+}
+
+bool tell_way(int id, Vec2 nest, const Params& p, const Route& route, PfMemory& m, std::int64_t tick,
+              Command& cmd) {
+  if (!p.share_way || !m.knows_way || tick % 2 == 0) return false;
+  work_out_way(p, route, m);
+  if (m.tell_count <= 0) return false;
+  const int k = static_cast<int>((tick / 2) % m.tell_count);
+  const Vec2 rel = kCmPerM * (m.tell_corners[static_cast<std::size_t>(k)] - nest);
+  cmd.rab_send = true;
+  cmd.rab = RabPayload{};
+  cmd.rab[0] = static_cast<std::uint8_t>(id & 0xff);
+  cmd.rab[1] = kWayMark;
+  cmd.rab[2] = static_cast<std::uint8_t>(k);
+  cmd.rab[3] = static_cast<std::uint8_t>(m.tell_count);
+  put_i16(cmd.rab, 4, rel.x);
+  put_i16(cmd.rab, 6, rel.y);
+  return true;
+}
+
+bool listens_for_way(const Params& p, const PfMemory& m) {
+  return p.share_way && p.share_sighting > 0.0 && m.role == PfRole::kSwarm && m.told.teller != kNobody &&
+         !m.told.complete() && (m.state == PfState::kResting || m.state == PfState::kExploring);
+}
+
+bool hear_way(std::span<const RabMessage> inbox, Vec2 nest, PfMemory& m) {
+  bool any = false;
+  for (const RabMessage& r : inbox) {
+    if (r.data[1] != kWayMark || r.sender != m.told.teller) continue;
+    const int count = r.data[3];
+    const int k = r.data[2];
+    if (count < 1 || count > ToldWay::kMax || k >= count) continue;
+    if (count != m.told.count) {  // a way other than the one begun (the teller's sighting moved on)
+      m.told.count = count;
+      m.told.heard = 0;
+    }
+    m.told.corners[static_cast<std::size_t>(k)] = nest + kCm * Vec2{get_i16(r.data, 4), get_i16(r.data, 6)};
+    m.told.heard |= std::uint32_t{1} << k;
+    any = true;
+  }
+  return any;
 }
 
 }  // namespace swarmpath::sim

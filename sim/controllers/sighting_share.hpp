@@ -9,6 +9,7 @@
 #include <cstdint>
 
 #include "pf_memory.hpp"
+#include "route.hpp"
 #include "sim/params.hpp"
 #include "sim/percept.hpp"
 
@@ -35,6 +36,31 @@ void tell_sighting(int id, Vec2 nest, const PfMemory& m, Command& cmd);
 
 /// The sighting told by the nearest robot heard (ties: the smaller id) becomes this robot's own
 /// (not seen on this trip, so that a trip that finds nothing there forgets it); false when none.
+/// With share_way the robot then listens for that teller's way (listens_for_way).
 bool hear_sighting(std::span<const RabMessage> inbox, Vec2 nest, PfMemory& m);
+
+/// share_way [R]: a way to a sighting ends at its crumb nearest the sighting within R_vis and this
+/// much more [m]: the robot saw it from within R_vis, and its trail keeps a crumb every 25 cm (fewer
+/// on straight stretches).
+inline constexpr double kWaySlack = 0.5;
+
+/// share_way [R]: the corners of the way to `m.sighting` that the robot tells (m.tell_corners,
+/// m.tell_count: 0 when its route does not come near the sighting), worked out when the route or
+/// the sighting has changed. With share_way a robot tells only when it knows such a way.
+void work_out_way(const Params& p, const Route& route, PfMemory& m);
+
+/// share_way [R]: a teller whose route is its own way to its sighting (the trip that saw it) tells,
+/// on odd ticks, one corner of that way after another (route.corners: at most ToldWay::kMax, from
+/// the trip's start near the nest to the crumb nearest the sighting within R_vis), instead of the
+/// sighting, which it tells on even ticks. False (tell the sighting) when it has no such way.
+bool tell_way(int id, Vec2 nest, const Params& p, const Route& route, PfMemory& m, std::int64_t tick,
+              Command& cmd);
+
+/// share_way [R]: a robot that took a teller's sighting and has not heard its whole way listens for
+/// it, resting or on its trip (within the medium's 3 m of the teller).
+bool listens_for_way(const Params& p, const PfMemory& m);
+
+/// share_way [R]: the corners of the teller's way heard in `inbox` are kept; false when none.
+bool hear_way(std::span<const RabMessage> inbox, Vec2 nest, PfMemory& m);
 
 }  // namespace swarmpath::sim

@@ -3,6 +3,8 @@
 // it saw the chain that the field traps against a wall retraces the way of the trip that saw it. In a
 // small arena whose doorway lies far off the nest-goal line (tests/data/far_door.toml), the straight
 // line from the nest to the goal's room runs into the wall; the robots' own ways lead to the doorway.
+// walk_way and share_way walk such ways from the start of a trip, in task allocation (far_door) and,
+// told at the nest, in path formation (tests/data/small_serpentine.toml: two walls on the way).
 #include <gtest/gtest.h>
 
 #include "sim/controller.hpp"
@@ -14,12 +16,14 @@ namespace {
 
 struct Travel {
   bool formed = false;
+  std::int64_t ticks = -1;      ///< ticks to form (-1: not formed)
   std::int64_t travelling = 0;  ///< robot-ticks spent travelling to a sighting (or leading there)
-  std::int64_t on_route = 0;    ///< ... of them, walking a kept way
+  std::int64_t on_route = 0;    ///< ... of them, walking a kept way (its own, or one heard)
+  std::int64_t on_told = 0;     ///< ... of them, walking a way heard from another robot (share_way)
 };
 
-Travel run_far_door(const Params& p, Mode mode, std::uint64_t seed) {
-  const Scenario s = load_scenario(test::source_path("tests/data/far_door.toml"));
+Travel run_arena(const char* file, const Params& p, Mode mode, std::uint64_t seed) {
+  const Scenario s = load_scenario(test::source_path(file));
   Travel t;
   const auto observe = [&t](const World& w) {
     for (const RobotMemory& mem : w.memory) {
@@ -29,11 +33,18 @@ Travel run_far_door(const Params& p, Mode mode, std::uint64_t seed) {
       if (!travel) continue;
       ++t.travelling;
       if (mem.route.walking()) ++t.on_route;
+      if (mem.route.walking() && mem.pf.told.complete()) ++t.on_told;
     }
     return false;
   };
-  t.formed = run(p, s, mode, seed, observe).success;
+  const Metrics m = run(p, s, mode, seed, observe);
+  t.formed = m.success;
+  t.ticks = m.ticks_to_form;
   return t;
+}
+
+Travel run_far_door(const Params& p, Mode mode, std::uint64_t seed) {
+  return run_arena("tests/data/far_door.toml", p, mode, seed);
 }
 
 // far_door, 50 robots, path formation, seeds 1-8 (off -> on: formed; robot-ticks travelling to a
@@ -56,6 +67,73 @@ TEST(RouteToSighting, RobotsTrappedOnTheirWayBackToTheChainRetraceTheWayTheyCame
     EXPECT_LT(2 * with.travelling, without.travelling) << seed;  // less than half the travel
     EXPECT_TRUE(with.formed) << seed;
   }
+}
+
+// walk_way, share_way [R] (docs/detours.md): ways walked from the start of a trip.
+
+// far_door, 50 robots, task allocation, seeds 1-8 (off -> on: ticks to form; robot-ticks travelling
+// to a sighting): off forms every seed but 7; on every seed, seed 7 at 9 054 ticks with its travel
+// 105 043 -> 45 355 robot-ticks (the robots that saw the chain, sent back to it by the field, press
+// against the wall until travel_cap ends their trips); the other seeds form within 1 200 ticks of
+// off, six of them walking a kept way for 500-4 000 robot-ticks.
+TEST(WalkWay, RobotsOfTaskAllocationWalkTheWayTheyCameBackToTheChain) {
+  const Params off;  // the default: walk_way = false
+  ASSERT_FALSE(off.walk_way);
+  Params on = off;
+  on.walk_way = true;
+  int formed_off = 0;
+  int formed_on = 0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const Travel without = run_far_door(off, Mode::kTaskAllocation, seed);
+    const Travel with = run_far_door(on, Mode::kTaskAllocation, seed);
+    EXPECT_EQ(without.on_route, 0) << seed;  // off: nobody walks a kept way
+    formed_off += without.formed ? 1 : 0;
+    formed_on += with.formed ? 1 : 0;
+    if (seed == 7) {
+      EXPECT_FALSE(without.formed);
+      EXPECT_TRUE(with.formed);
+      EXPECT_GT(with.on_route, 0);
+      EXPECT_LT(2 * with.travelling, without.travelling);  // less than half the travel
+    }
+  }
+  EXPECT_EQ(formed_off, 7);
+  EXPECT_EQ(formed_on, 8);
+  // path formation without task allocation is not touched: the same run, bit for bit
+  const Scenario s = load_scenario(test::source_path("tests/data/far_door.toml"));
+  EXPECT_EQ(evaluate(off, s, Mode::kPathFormation, 1).state_hash,
+            evaluate(on, s, Mode::kPathFormation, 1).state_hash);
+}
+
+// small_serpentine, 40 robots, path formation, telling from the start of the run (share_after = 0),
+// seeds 1-8 (off -> on: robot-ticks travelling to a sighting): every seed forms either way; the
+// travel falls to 13-63 % of off's on every seed (seed 1: 120 279 -> 16 279; seed 5: 145 937 ->
+// 22 925; all eight 859 073 -> 198 661), most of it along ways heard from other robots, and the
+// path forms sooner on six seeds (seed 5: 19 812 -> 8 172 ticks; all eight 92 001 -> 77 273).
+TEST(ShareWay, ToldRobotsWalkTheWayTheTellerCameAndTravelFarLess) {
+  Params off;
+  off.share_after = 0;
+  ASSERT_FALSE(off.share_way);
+  Params on = off;
+  on.share_way = true;
+  std::int64_t travel_off = 0;
+  std::int64_t travel_on = 0;
+  std::int64_t ticks_off = 0;
+  std::int64_t ticks_on = 0;
+  for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+    const Travel without = run_arena("tests/data/small_serpentine.toml", off, Mode::kPathFormation, seed);
+    const Travel with = run_arena("tests/data/small_serpentine.toml", on, Mode::kPathFormation, seed);
+    EXPECT_TRUE(without.formed) << seed;
+    EXPECT_TRUE(with.formed) << seed;
+    EXPECT_EQ(without.on_route, 0) << seed;  // off: the field toward the sighting, no way
+    EXPECT_GT(with.on_told, 0) << seed;      // on: robots walk ways they heard
+    EXPECT_LT(with.travelling, without.travelling) << seed;
+    travel_off += without.travelling;
+    travel_on += with.travelling;
+    ticks_off += without.ticks;
+    ticks_on += with.ticks;
+  }
+  EXPECT_LT(3 * travel_on, travel_off);
+  EXPECT_LT(ticks_on, ticks_off);
 }
 
 }  // namespace

@@ -11,19 +11,7 @@
 namespace swarmpath::sim {
 namespace {
 
-using test::walk;
-
-// from the nest at (-3, 0) down to a doorway at (0, -3) in a wall along x = 0, through it and up to
-// (3, 0), where the robot saw the chain at (3.5, 0.3); then on, exploring, to (3, 3)
-Trail trip_through_the_doorway() {
-  Trail t;
-  t.reset({-3.0, 0.0});
-  walk(t, {-3.0, 0.0}, {-0.5, -3.0});
-  walk(t, {-0.5, -3.0}, {0.5, -3.0});
-  walk(t, {0.5, -3.0}, {3.0, 0.0});
-  walk(t, {3.0, 0.0}, {3.0, 3.0});
-  return t;
-}
+using test::trip_through_the_doorway;
 
 TEST(Route, TheWayLeadsThroughTheDoorwayItCameByAndEndsWhereTheSightingWasSeen) {
   Route r;

@@ -32,6 +32,18 @@ inline void walk(sim::Trail& t, sim::Vec2 from, sim::Vec2 to) {
   for (int k = 1; k <= steps; ++k) t.record(from + (static_cast<double>(k) / steps) * (to - from));
 }
 
+/// A trip from the nest at (-3, 0) down to a doorway at (0, -3) in a wall along x = 0, through it and
+/// up to (3, 0), where the robot saw the chain at (3.5, 0.3); then on, exploring, to (3, 3).
+inline sim::Trail trip_through_the_doorway() {
+  sim::Trail t;
+  t.reset({-3.0, 0.0});
+  walk(t, {-3.0, 0.0}, {-0.5, -3.0});
+  walk(t, {-0.5, -3.0}, {0.5, -3.0});
+  walk(t, {0.5, -3.0}, {3.0, 0.0});
+  walk(t, {3.0, 0.0}, {3.0, 3.0});
+  return t;
+}
+
 inline sim::Scenario small_arena(const std::string& extra = "", int robots = 10) {
   return sim::parse_scenario(small_arena_toml(extra, robots), "small.toml");
 }
