@@ -10,6 +10,17 @@
 
 namespace swarmpath::evolve {
 
+std::string_view keep_base_test_name(KeepBaseTest t) {
+  return t == KeepBaseTest::kSignedRank ? "signed-rank" : "t";
+}
+
+std::optional<KeepBaseTest> parse_keep_base_test(std::string_view name) {
+  for (const KeepBaseTest t : {KeepBaseTest::kPairedT, KeepBaseTest::kSignedRank}) {
+    if (name == keep_base_test_name(t)) return t;
+  }
+  return std::nullopt;
+}
+
 double signed_rank_p_value(std::span<const double> d, double* w_plus) {
   std::vector<double> size;
   std::vector<bool> won;

@@ -12,7 +12,9 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <span>
+#include <string_view>
 
 namespace swarmpath::evolve {
 
@@ -21,6 +23,12 @@ enum class KeepBaseTest {
   kPairedT,     ///< one-sided paired Student t-test ("t", the default)
   kSignedRank,  ///< exact one-sided Wilcoxon signed-rank test ("signed-rank")
 };
+
+/// The test's name in evolve configs and in JSON ("t", "signed-rank").
+std::string_view keep_base_test_name(KeepBaseTest t);
+
+/// The test a name stands for; nullopt when none does.
+std::optional<KeepBaseTest> parse_keep_base_test(std::string_view name);
 
 /// The test of the best finalist against the base params, and its outcome.
 struct BaseSelection {

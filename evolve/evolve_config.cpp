@@ -447,11 +447,15 @@ void read_reevaluate(EvolveConfig& c, const TableReader& root, const std::string
   if (!r.keep_base && t->has("keep_base_test")) {
     t->fail("keep_base_test", "applies only with keep_base = true: remove it or set keep_base = true");
   }
-  const std::string test = t->string_or("keep_base_test", "t");
-  if (test != "t" && test != "signed-rank") {
-    t->fail("keep_base_test", "unknown test \"" + test + "\" (choices: t, signed-rank)");
+  const std::string test =
+      t->string_or("keep_base_test", std::string(keep_base_test_name(KeepBaseTest::kPairedT)));
+  const std::optional<KeepBaseTest> parsed = parse_keep_base_test(test);
+  if (!parsed) {
+    t->fail("keep_base_test", "unknown test \"" + test +
+                                  "\" (choices: " + std::string(keep_base_test_name(KeepBaseTest::kPairedT)) +
+                                  ", " + std::string(keep_base_test_name(KeepBaseTest::kSignedRank)) + ")");
   }
-  r.keep_base_test = test == "signed-rank" ? KeepBaseTest::kSignedRank : KeepBaseTest::kPairedT;
+  r.keep_base_test = *parsed;
   r.mean_finalist = t->boolean_or("mean_finalist", r.mean_finalist);
   if (r.mean_finalist && c.optimizer.name != "cmaes") {
     t->fail("mean_finalist", "the distribution mean is CMA-ES's (optimizer name = \"cmaes\"), not " +
@@ -664,7 +668,8 @@ nlohmann::ordered_json config_json(const EvolveConfig& c) {
   if (c.reevaluate.keep_base && c.reevaluate.keep_base_level != Reevaluation{}.keep_base_level)
     j["reevaluate"]["keep_base_level"] = c.reevaluate.keep_base_level;
   if (c.reevaluate.keep_base && c.reevaluate.keep_base_test == KeepBaseTest::kSignedRank)
-    j["reevaluate"]["keep_base_test"] = "signed-rank";  // only when not the t-test: hash kept
+    j["reevaluate"]["keep_base_test"] =
+        keep_base_test_name(c.reevaluate.keep_base_test);  // not the t-test: hash kept
   if (c.multi_objective()) {
     nlohmann::ordered_json use = nlohmann::ordered_json::array();
     for (const ObjectiveKind k : c.multi.objectives) use.push_back(std::string(objective_name(k)));

@@ -312,7 +312,7 @@ nlohmann::ordered_json run_json(const EvolveConfig& c, const RunResult& r, int t
                       {"t", s.t},
                       {"p_value", s.p_value}};
     if (s.test == KeepBaseTest::kSignedRank) {  // only then: the files of t-test runs unchanged
-      j["selection"]["test"] = "signed-rank";
+      j["selection"]["test"] = keep_base_test_name(s.test);
       j["selection"]["w_plus"] = s.w_plus;
     }
   } else {

@@ -78,6 +78,15 @@ TEST(SignedRank, TheNormalApproximationBeyondTheExactCountAgreesWithIt) {
   EXPECT_NEAR(approx, exact, 0.02);
 }
 
+TEST(SignedRank, EachTestsNameParsesBackToItAndNoOtherNameDoes) {
+  EXPECT_EQ(keep_base_test_name(KeepBaseTest::kPairedT), "t");
+  EXPECT_EQ(keep_base_test_name(KeepBaseTest::kSignedRank), "signed-rank");
+  for (const KeepBaseTest t : {KeepBaseTest::kPairedT, KeepBaseTest::kSignedRank})
+    EXPECT_EQ(parse_keep_base_test(keep_base_test_name(t)), t);
+  EXPECT_FALSE(parse_keep_base_test("wilcoxon").has_value());
+  EXPECT_FALSE(parse_keep_base_test("").has_value());
+}
+
 TEST(SignedRank, TheKeyIsCheckedAndTheTTestKeepsTheHash) {
   const std::string base = testing::tiny_config();
   testing::expect_error(base + "keep_base_test = \"wilcoxon\"\n", "keep_base_test",
