@@ -49,10 +49,11 @@ inline constexpr double kWaySlack = 0.5;
 /// the sighting has changed. With share_way a robot tells only when it knows such a way.
 void work_out_way(const Params& p, const Route& route, PfMemory& m);
 
-/// share_way [R]: a teller whose route is its own way to its sighting (the trip that saw it) tells,
-/// on odd ticks, one corner of that way after another (route.corners: at most ToldWay::kMax, from
-/// the trip's start near the nest to the crumb nearest the sighting within R_vis), instead of the
-/// sighting, which it tells on even ticks. False (tell the sighting) when it has no such way.
+/// share_way [R]: a teller that knows a way to its sighting (its own trip's, or one heard whole)
+/// tells, on odd ticks, one corner of that way after another (work_out_way: at most ToldWay::kMax,
+/// from where the way began near the nest to its crumb nearest the sighting within R_vis +
+/// kWaySlack), instead of the sighting, which it tells on even ticks. False (tell the sighting)
+/// when it knows no such way.
 bool tell_way(int id, Vec2 nest, const Params& p, const Route& route, PfMemory& m, std::int64_t tick,
               Command& cmd);
 
