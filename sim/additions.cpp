@@ -26,6 +26,7 @@ const std::array kAdditions{
   Addition{"share_sighting", "robots at the nest tell each other where they saw the chain", "§2.3 #2, #4", kBoth, {{{"share_sighting", 0}}}, {"site_fidelity"}},
   Addition{"walk_way", "a trip to the sighting walks the way it was seen from", "§2.3 #2", kBoth, {{{"walk_way", 0}}}, {"site_fidelity"}},
   Addition{"share_way", "robots at the nest tell the way to where they saw the chain", "§2.3 #2, #4", kBoth, {{{"share_way", 0}}}, {"share_sighting", "site_fidelity"}},
+  Addition{"lead_way", "the founder tells and leads along the way it found the goal", "§2.6 T5, T9", kTa, {{{"lead_way", 0}}}, {"share_goal", "site_fidelity"}},
   Addition{"route_to_sighting", "a trip to the sighting retraces the way it was seen from", "§2.3 #2", kBoth, {{{"route_to_sighting", 0}}}, {"site_fidelity", "T_trap"}},
   Addition{"return_lured", "a scout going home turns to the goal it sees", "§2.6 T2", kTa, {{{"return_lured", 0}}}, {"return_finds"}},
   // going home along the breadcrumbs

@@ -2,6 +2,7 @@
 #include "controller.hpp"
 
 #include "controllers/diffusion.hpp"
+#include "controllers/founder_way.hpp"
 #include "controllers/path_formation.hpp"
 #include "controllers/sighting_share.hpp"
 
@@ -44,6 +45,7 @@ bool robot_listens(Mode m, const Params& p, const RobotMemory& mem, std::int64_t
   if (m != Mode::kTaskAllocation) return true;  // the world's needs.rab decides
   return mem.ta.state == TaState::kScout || mem.ta.state == TaState::kGoalFounder ||
          mem.ta.state == TaState::kDecisionMaker || claims_links(p, mem.pf) ||
+         listens_for_founder_way(p, mem, tick) ||
          (mem.ta.state == TaState::kRestingTask && p.rest_recruit && p.recruit_call);
 }
 

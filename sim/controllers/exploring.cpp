@@ -125,9 +125,10 @@ bool travel_to_sighting(const Percept& in, const Params& p, RobotMemory& mem, co
     nav_reset(mem.nav);
     return false;
   }
-  // R (walk_way: task allocation; share_way: path formation): a way to the sighting, its own or one
-  // heard whole, is walked from the start
-  const bool walk_way = (p.share_way || (p.walk_way && m.role != PfRole::kSwarm)) && m.knows_way;
+  // R (walk_way: task allocation; share_way: path formation; lead_way: the founder's, told at the
+  // nest): a way to the sighting, its own or one heard whole, is walked from the start
+  const bool walk_way =
+      (p.share_way || ((p.walk_way || p.lead_way) && m.role != PfRole::kSwarm)) && m.knows_way;
   if (walk_way && !mem.route.begun_for(m.trip_start, m.sighting)) {
     mem.route.set_trip(m.trip_start, m.sighting);
     mem.route.begin(in.pose.p, m.sighting, p.r_vis * kCm + kWaySlack, dist(in.pose.p, mem.nest));

@@ -93,7 +93,7 @@ bool hear_sighting(std::span<const RabMessage> inbox, Vec2 nest, PfMemory& m) {
 }
 
 void work_out_way(const Params& p, const Route& route, PfMemory& m) {
-  if (!p.share_way || !m.knows_way) return;
+  if ((!p.share_way && !p.lead_way) || !m.knows_way) return;
   if (m.tell_count < 0 || m.tell_for.x != m.sighting.x || m.tell_for.y != m.sighting.y) {
     m.tell_count = route.corners(m.sighting, p.r_vis * kCm + kWaySlack, m.tell_corners);
     m.tell_for = m.sighting;

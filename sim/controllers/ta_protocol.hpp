@@ -14,7 +14,8 @@
 
 namespace swarmpath::sim {
 
-enum class MsgType : std::uint8_t { kNone = 0, kRequest = 1, kJoin = 2, kAck = 3, kDone = 4 };
+/// kWay [R lead_way]: one corner of a founder's way to the goal (way_message), not of SPEC §2.6
+enum class MsgType : std::uint8_t { kNone = 0, kRequest = 1, kJoin = 2, kAck = 3, kDone = 4, kWay = 5 };
 
 inline constexpr std::uint8_t kBroadcastId = 255;   ///< destination "all" / parent "none"
 inline constexpr std::uint8_t kFlagAllocDone = 1;   ///< flags bit 0: the allocation is over
@@ -85,6 +86,7 @@ inline constexpr RabKinds kKindJoin = 4;       ///< JOIN
 inline constexpr RabKinds kKindClaim = 8;      ///< a claim (claimed_emitter), recruit_call's too
 inline constexpr RabKinds kKindFetch = 16;     ///< a fetch message (fetch_for)
 inline constexpr RabKinds kKindRecall = 32;    ///< a founder allocating from the resting robots
+inline constexpr RabKinds kKindWay = 64;       ///< a corner of a founder's way (lead_way)
 
 /// A set of robot ids as they travel on the medium (one byte each).
 struct IdSet {
@@ -116,7 +118,7 @@ inline TaMessage decode(const RabPayload& p) {
   m.state = p[1];
   m.parent = p[2];
   m.flags = static_cast<std::uint8_t>(p[3] & ~kGoalUnitMask);
-  m.type = p[4] <= 4 ? static_cast<MsgType>(p[4]) : MsgType::kNone;
+  m.type = p[4] <= 5 ? static_cast<MsgType>(p[4]) : MsgType::kNone;
   m.dest = p[5];
   m.remaining = p[6];
   m.t_founder_ds = static_cast<std::uint16_t>((p[8] << 8) | p[9]);
@@ -201,6 +203,21 @@ TaMessage claim_message(std::uint8_t my_id, int emitter);
 
 /// The emitter a message claims (claim_message), or kNobody.
 int claimed_emitter(const TaMessage& m);
+
+/// lead_way [R]: corner `index` of `count` of a founder's way to the goal, relative to the nest [cm].
+struct WayCorner {
+  int index = 0;
+  int count = 0;
+  double x_cm = 0;
+  double y_cm = 0;
+};
+
+/// lead_way [R]: the payload of a corner: 0 id, 1 state 0 (no claim), 2 the index, 3 flags 0, 4 kWay,
+/// 5 the count, 6-7 and 8-9 x and y in cm (signed 16-bit, high byte first: +-327 m).
+RabPayload way_message(std::uint8_t id, const WayCorner& c);
+
+/// The corner a kWay payload carries (way_message's inverse).
+WayCorner way_corner(const RabPayload& p);
 
 /// The kinds (kKind*) of message `m` is.
 RabKinds message_kinds(const TaMessage& m);

@@ -9,6 +9,7 @@
 #include "colours.hpp"
 #include "exploring.hpp"
 #include "forming.hpp"
+#include "founder_way.hpp"
 #include "navigation.hpp"
 #include "path_formation.hpp"
 #include "resting.hpp"
@@ -121,6 +122,7 @@ void become_founder(const TaContext& c, RobotMemory& mem) {
                              : static_cast<double>(c.in.tick - mem.pf.trip_start);
   mem.ta.t_founder_s = seconds(t_ticks);
   if (c.p.route_to_sighting) mem.route.keep(mem.trail);  // R: the way it found the goal, to lead along
+  keep_founder_way(c.p, mem);                            // R lead_way: and to tell
   mem.ta.n = robots_needed(mem.ta.t_founder_s, c.p.v_max, c.p.r_vis, delta_for(c.p, mem.env_class),
                            static_cast<int>(c.p.n_min), c.swarm);
 }
@@ -132,6 +134,11 @@ void start_path_formation(const TaContext& c, RobotMemory& mem, double t_founder
   mem.pf.t_explore = std::max(1.0, c.p.kappa * t_founder_s * kTicksPerSecond);
   mem.pf.sighting = keep.sighting;
   mem.pf.has_sighting = keep.has_sighting;
+  if (c.p.lead_way) {  // R: the founder's way, its own or heard at the nest
+    mem.pf.knows_way = keep.knows_way;
+    mem.pf.tell_count = -1;
+    mem.pf.told = keep.told;
+  }
   mem.pf.explore_leg = first_leg(c.p, mem.pf);
   mem.pf.trip_start = c.in.tick;
   mem.trail.reset(c.in.pose.p);
@@ -147,6 +154,7 @@ void founder_initiates(const TaContext& c, RobotMemory& mem) {
 void dm_initiates(const TaContext& c, RobotMemory& mem) {
   const TaMessage& ack = c.sight.dm.ack;
   start_path_formation(c, mem, static_cast<double>(ack.t_founder_ds));
+  if (c.p.lead_way && mem.pf.told.teller == ack.id) take_founder_way(mem);  // R: heard whole at the nest
   bool to_sighting = mem.pf.explore_leg == ExploreLeg::kToSighting;
   // R: the robots ACKed later (fewer remaining) leave first, depart_gap ticks apart
   mem.ta.depart_tick = c.in.tick + static_cast<std::int64_t>(std::llround(c.p.depart_gap * ack.remaining));
@@ -192,6 +200,7 @@ void refound(const TaContext& c, RobotMemory& mem) {
   mem.pf.has_sighting = true;
   mem.pf.trip_start = c.in.tick;
   if (c.p.route_to_sighting) mem.route.keep(mem.trail);  // R: its way out to the chain's end, to lead along
+  keep_founder_way(c.p, mem);                            // R lead_way: and to tell
 }
 
 // clang-format off
@@ -243,6 +252,8 @@ Command found(const Percept& in, const Params& p, RobotMemory& mem, int swarm, b
     m.protocol = start_founder(m.n - (p.founder_counts_self ? 1 : 0));
   }
   if (!m.protocol_started) return m.refounder ? say(cmd, fetch_message(id, m.left_parent)) : cmd;
+  Command told = cmd;  // R lead_way: every other tick a corner of its way; the protocol waits a tick
+  if (tell_founder_way(in.tick, in.id, p, mem, told)) return told;
   // no JOIN for T_founder_wait ticks: nobody is left to ask; allocate what it has [R]
   m.waited = m.protocol.remaining > 0 && !joined(id, in.rab) ? m.waited + 1 : 0;
   if (p.t_founder_wait > 0.0 && static_cast<double>(m.waited) >= p.t_founder_wait) m.protocol.remaining = 0;
@@ -324,10 +335,12 @@ RabKinds ta_interest(const Params& p, const RobotMemory& mem) {
     case TaState::kScout:        // every reading: T2 (a founder reads JOINs), T3, T7, path formation
     case TaState::kGoalFounder:  // T8, T7f, T9 (path formation), the protocol (JOINs)
       return kEveryRabKind;
-    case TaState::kDecisionMaker:  // the protocol; T5 may start path formation this tick (claims, fetches)
-      return kKindFounder | kKindAllocDone | kKindClaim | kKindFetch;
-    case TaState::kPathFormation:  // path formation's claims and fetches; T12 (a founder reads JOINs)
-      return kKindClaim | kKindFetch | kKindJoin;
+    case TaState::kDecisionMaker:  // the protocol; T5 may start path formation this tick (claims, fetches);
+                                   // lead_way's corners
+      return kKindFounder | kKindAllocDone | kKindClaim | kKindFetch | (p.lead_way ? kKindWay : 0);
+    case TaState::kPathFormation:  // path formation's claims and fetches; T12 (a founder reads JOINs);
+                                   // lead_way's corners
+      return kKindClaim | kKindFetch | kKindJoin | (p.lead_way ? kKindWay : 0);
     case TaState::kRestingTask:  // at its deployment point: T10's claims and calls, T11's recalls, and
                                  // path formation after them
       return mem.ta.arrived && (p.rest_recruit || p.refound_starved) ? kKindClaim | kKindFetch | kKindRecall
@@ -340,6 +353,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
   TaMemory& m = mem.ta;
   TaSight sight;
   ta_perceive(in, p, mem, sight);
+  if (listens_for_founder_way(p, mem, in.tick)) hear_founder_way(in.rab, mem);  // lead_way [R]
   if (sight.chain_end == nullptr && sight.call == nullptr) {
     m.end_seen = 0;
   } else if (m.end_seen++ == 0) {  // R rest_recruit: T_recruit plus a draw, so that one of several goes
@@ -363,6 +377,8 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
         break;
       }
       cmd = path_formation_step(in, p, mem);
+      if (mem.pf.explore_leg == ExploreLeg::kLead && !cmd.rab_send)
+        tell_founder_way(in.tick, in.id, p, mem, cmd);
       break;
     case TaState::kGoalFounder:
       cmd = found(in, p, mem, swarm, at_nest);

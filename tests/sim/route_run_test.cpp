@@ -4,7 +4,8 @@
 // small arena whose doorway lies far off the nest-goal line (tests/data/far_door.toml), the straight
 // line from the nest to the goal's room runs into the wall; the robots' own ways lead to the doorway.
 // walk_way and share_way walk such ways from the start of a trip, in task allocation (far_door) and,
-// told at the nest, in path formation (tests/data/small_serpentine.toml: two walls on the way).
+// told at the nest, in path formation (tests/data/small_serpentine.toml: two walls on the way);
+// lead_way, the founder's way told at the nest to the robots it allocates (tests/data/wallfar_11.toml).
 #include <gtest/gtest.h>
 
 #include "sim/controller.hpp"
@@ -77,7 +78,8 @@ TEST(RouteToSighting, RobotsTrappedOnTheirWayBackToTheChainRetraceTheWayTheyCame
 // against the wall until travel_cap ends their trips); the other seeds form within 1 200 ticks of
 // off, six of them walking a kept way for 500-4 000 robot-ticks.
 TEST(WalkWay, RobotsOfTaskAllocationWalkTheWayTheyCameBackToTheChain) {
-  const Params off;  // the default: walk_way = false
+  Params off;            // the default: walk_way = false
+  off.lead_way = false;  // as measured: no robot walks the founder's way either
   ASSERT_FALSE(off.walk_way);
   Params on = off;
   on.walk_way = true;
@@ -134,6 +136,32 @@ TEST(ShareWay, ToldRobotsWalkTheWayTheTellerCameAndTravelFarLess) {
   }
   EXPECT_LT(3 * travel_on, travel_off);
   EXPECT_LT(ticks_on, ticks_off);
+}
+
+// lead_way [R] (docs/detours.md): the founder tells the way of the trip that found the goal at the
+// nest, and the allocated robots walk it. tests/data/wallfar_11.toml (the training arena
+// wall-gap-11: a wall across the arena, its one doorway 7.4 m off the nest-goal line), 60 robots, seed 21,
+// task allocation: without the rule the allocated robots that lose their guide head for the goal by
+// the field, into the wall, and the path does not form within T_max; with it they walk the
+// founder's way through the doorway and the path forms.
+TEST(LeadWay, AllocatedRobotsWalkTheWayTheFounderFoundTheGoalBy) {
+  const Params on;  // the default
+  ASSERT_TRUE(on.lead_way);
+  Params off = on;
+  off.lead_way = false;
+  const Travel without = run_arena("tests/data/wallfar_11.toml", off, Mode::kTaskAllocation, 21);
+  const Travel with = run_arena("tests/data/wallfar_11.toml", on, Mode::kTaskAllocation, 21);
+  EXPECT_EQ(without.on_told, 0);  // off: nobody walks a way it was told
+  EXPECT_FALSE(without.formed);
+  // on: most of the travel to the goal is along the founder's way (59 108 of 88 559 robot-ticks), and
+  // the travel is a fifth of off's (456 485 robot-ticks pressing against the wall)
+  EXPECT_GT(2 * with.on_told, with.travelling);
+  EXPECT_LT(2 * with.travelling, without.travelling);
+  EXPECT_TRUE(with.formed);
+  // path formation without task allocation is not touched: the same run, bit for bit
+  const Scenario s = load_scenario(test::source_path("tests/data/far_door.toml"));
+  EXPECT_EQ(evaluate(off, s, Mode::kPathFormation, 1).state_hash,
+            evaluate(on, s, Mode::kPathFormation, 1).state_hash);
 }
 
 }  // namespace

@@ -88,6 +88,28 @@ TEST(TaFraming, AnUnknownTypeDecodesAsNone) {
   EXPECT_EQ(decode(p).type, MsgType::kNone);
 }
 
+// lead_way [R]: a corner of the founder's way is a message of its own type that no reader of the
+// protocol takes for a claim, a fetch, a founder's message or ALLOC_DONE.
+TEST(TaFraming, AWayCornerTravelsToTheCentimetreAndIsNoOtherMessage) {
+  for (const WayCorner c : {WayCorner{0, 15, -1794.0, 32.0}, WayCorner{14, 15, 32767.0, -32767.0},
+                            WayCorner{3, 16, 3.0, 1.0}}) {  // state byte 0, parent byte 3: no claim
+    const RabPayload p = way_message(42, c);
+    const TaMessage m = decode(p);
+    EXPECT_EQ(m.id, 42);
+    EXPECT_EQ(m.type, MsgType::kWay);
+    EXPECT_EQ(message_kinds(m), kKindWay);
+    EXPECT_EQ(claimed_emitter(m), kNobody);
+    EXPECT_EQ(fetch_for(m), kNobody);
+    const WayCorner back = way_corner(p);
+    EXPECT_EQ(back.index, c.index);
+    EXPECT_EQ(back.count, c.count);
+    EXPECT_EQ(back.x_cm, c.x_cm);
+    EXPECT_EQ(back.y_cm, c.y_cm);
+  }
+  EXPECT_EQ(way_corner(way_message(1, {0, 1, 40000.0, -40000.0})).x_cm, 32767.0);  // +-327 m: clamped
+  EXPECT_EQ(message_kinds(decode(encode(TaMessage{}))) & kKindWay, 0U);            // nor is any other
+}
+
 TEST(TaEquations, WorkedExampleOfSpec27) {
   // t = 150 s, s = 10 cm/s -> l = 1500 cm -> n0 = 15 -> delta_open 5 -> n = 20 (RR 80 % of 100)
   EXPECT_EQ(robots_needed(150.0, 10.0, 100.0, 5.0, 2, 100), 20);

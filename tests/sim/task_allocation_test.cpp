@@ -655,9 +655,12 @@ int allocated_ever_in_chain(const Params& p, const Scenario& s, std::uint64_t se
 // seed 2, 34 robots stood RED for a path of 15 (commit 191f731). With one child per subgoal, each
 // link placed toward the nest and the robots leaving one after another, nearly every RED robot ends
 // up in the path. Seeds 1-4: 71 RED for paths of 68 robots in all; without the three, 134 for 71.
+// Measured without lead_way: robots walking the founder's wandering way out meet the chain from its
+// side and lay side branches again (with it: 103 RED for paths of 65; docs/detours.md, lead_way).
 TEST(TaRun, OneChainNoSideBranches) {
   const Scenario s = env1_with(60);
-  const Params p = load_params(test::source_path("genomes/paper-single.toml"));
+  Params p = load_params(test::source_path("genomes/paper-single.toml"));
+  p.lead_way = false;
   ASSERT_TRUE(p.single_child && p.ta_backoff_spot && p.depart_gap > 0);
   Params fan = p;
   fan.single_child = false;
@@ -687,9 +690,11 @@ TEST(TaRun, OneChainNoSideBranches) {
 // (Navigator.ARobotOnItsWayToTheSpotAtTheRateTTrapAsksForKeepsGoing); asked for the whole 30 cm in
 // 25 ticks, robots turning round at the chain's tip took to their trails: env1, 100 robots, seed 1,
 // 20 of 21 links, 21 RED robots for a 10 m path (15 links at d_sub = 70 cm), and 112 over seeds 1-6.
+// Measured without lead_way (with it, the default: 108; docs/detours.md, lead_way).
 TEST(TaRun, LinksStepTowardTheNestNotSideways) {
   const Scenario s = env1_with(100);
-  const Params p = load_params(test::source_path("genomes/default.toml"));
+  Params p = load_params(test::source_path("genomes/default.toml"));
+  p.lead_way = false;
   int red = 0;
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
     Metrics m;
@@ -762,7 +767,9 @@ TEST(Determinism, GoldenHashTaskAllocationShortChain) {
   // align_taper and r_keep_pull removed (the alignment is SPEC §2.4's V = v_align v_max P/|P| + D), -> 1030
   // spot_patience removed (the back-off to the spot falls back to the trail after T_trap/4), -> 1775
   // the back-off's T_trap/4 asks for trap_progress/4, not all of it (the run spot_patience gave), -> 1030
-  constexpr std::uint64_t kExpected = 0x97f867b60d729607ULL;  // complete: 1030 ticks, 20 allocated
+  // lead_way (the founder tells its way at the nest, the protocol waiting every other tick; the
+  // allocated robots walk its wandering way out), -> 1885
+  constexpr std::uint64_t kExpected = 0xb7b833417e8b8254ULL;  // complete: 1885 ticks, 20 allocated
   Params p;
   p.delta_open = 5;  // SPEC §2.7's default, so that some of the 20 robots rest
   const Metrics m = evaluate(p, with_max_ticks(short_chain(), 20000), Mode::kTaskAllocation, 1);
