@@ -655,8 +655,9 @@ int allocated_ever_in_chain(const Params& p, const Scenario& s, std::uint64_t se
 // seed 2, 34 robots stood RED for a path of 15 (commit 191f731). With one child per subgoal, each
 // link placed toward the nest and the robots leaving one after another, nearly every RED robot ends
 // up in the path. Seeds 1-4: 71 RED for paths of 68 robots in all; without the three, 134 for 71.
-// Measured without lead_way: robots walking the founder's wandering way out meet the chain from its
-// side and lay side branches again (with it: 103 RED for paths of 65; docs/detours.md, lead_way).
+// Measured without lead_way: robots walking the founder's wandering way out reach the chain elsewhere
+// than the field brings them, and more of them stand RED (with it: 103 RED for paths of 65;
+// docs/detours.md, lead_way).
 TEST(TaRun, OneChainNoSideBranches) {
   const Scenario s = env1_with(60);
   Params p = load_params(test::source_path("genomes/paper-single.toml"));
