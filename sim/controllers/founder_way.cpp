@@ -18,14 +18,11 @@ void keep_founder_way(const Params& p, RobotMemory& mem) {
 }
 
 bool tell_founder_way(std::int64_t tick, int id, const Params& p, RobotMemory& mem, Command& cmd) {
-  PfMemory& m = mem.pf;
-  if (!p.lead_way || !m.knows_way || tick % 2 == 0) return false;
-  work_out_way(p, mem.route, m);
-  if (m.tell_count <= 0) return false;
-  const int k = static_cast<int>((tick / 2) % m.tell_count);
-  const Vec2 rel = kCmPerM * (m.tell_corners[static_cast<std::size_t>(k)] - mem.nest);
+  int k = 0;
+  Vec2 rel;
+  if (!p.lead_way || !corner_to_tell(p, mem.route, mem.pf, tick, mem.nest, k, rel)) return false;
   cmd.rab_send = true;
-  cmd.rab = way_message(static_cast<std::uint8_t>(id & 0xff), {k, m.tell_count, rel.x, rel.y});
+  cmd.rab = way_message(static_cast<std::uint8_t>(id & 0xff), {k, mem.pf.tell_count, rel.x, rel.y});
   return true;
 }
 

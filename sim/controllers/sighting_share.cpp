@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "rab_bytes.hpp"
 #include "units.hpp"
 
 namespace swarmpath::sim {
@@ -18,29 +19,6 @@ constexpr std::uint8_t kSightingMark = 0x53;
 // corners, bytes 4-5 and 6-7 the corner's x and y relative to the nest in cm (signed 16-bit,
 // little-endian: 327 m either way). Path formation sends no other message.
 constexpr std::uint8_t kWayMark = 0x57;
-
-void put_i16(RabPayload& b, std::size_t at, double v) {
-  const auto u =
-      static_cast<std::uint16_t>(static_cast<std::int16_t>(std::clamp(std::lround(v), -32767L, 32767L)));
-  b[at] = static_cast<std::uint8_t>(u & 0xffU);
-  b[at + 1] = static_cast<std::uint8_t>(u >> 8);
-}
-
-double get_i16(const RabPayload& b, std::size_t at) {
-  const auto u = static_cast<std::uint16_t>(b[at] | (b[at + 1] << 8));
-  return static_cast<double>(static_cast<std::int16_t>(u));
-}
-
-void put_i32(RabPayload& b, std::size_t at, std::int32_t v) {
-  const auto u = static_cast<std::uint32_t>(v);
-  for (std::size_t k = 0; k < 4; ++k) b[at + k] = static_cast<std::uint8_t>(u >> (8 * k));
-}
-
-std::int32_t get_i32(const RabPayload& b, std::size_t at) {
-  std::uint32_t u = 0;
-  for (std::size_t k = 0; k < 4; ++k) u |= static_cast<std::uint32_t>(b[at + k]) << (8 * k);
-  return static_cast<std::int32_t>(u);
-}
 
 }  // namespace
 
@@ -100,13 +78,21 @@ void work_out_way(const Params& p, const Route& route, PfMemory& m) {
   }
 }
 
-bool tell_way(int id, Vec2 nest, const Params& p, const Route& route, PfMemory& m, std::int64_t tick,
-              Command& cmd) {
-  if (!p.share_way || !m.knows_way || tick % 2 == 0) return false;
+bool corner_to_tell(const Params& p, const Route& route, PfMemory& m, std::int64_t tick, Vec2 nest, int& k,
+                    Vec2& rel_cm) {
+  if (!m.knows_way || tick % 2 == 0) return false;
   work_out_way(p, route, m);
   if (m.tell_count <= 0) return false;
-  const int k = static_cast<int>((tick / 2) % m.tell_count);
-  const Vec2 rel = kCmPerM * (m.tell_corners[static_cast<std::size_t>(k)] - nest);
+  k = static_cast<int>((tick / 2) % m.tell_count);
+  rel_cm = kCmPerM * (m.tell_corners[static_cast<std::size_t>(k)] - nest);
+  return true;
+}
+
+bool tell_way(int id, Vec2 nest, const Params& p, const Route& route, PfMemory& m, std::int64_t tick,
+              Command& cmd) {
+  int k = 0;
+  Vec2 rel;
+  if (!p.share_way || !corner_to_tell(p, route, m, tick, nest, k, rel)) return false;
   cmd.rab_send = true;
   cmd.rab = RabPayload{};
   cmd.rab[0] = static_cast<std::uint8_t>(id & 0xff);

@@ -49,6 +49,12 @@ inline constexpr double kWaySlack = 0.5;
 /// the sighting has changed. With share_way a robot tells only when it knows such a way.
 void work_out_way(const Params& p, const Route& route, PfMemory& m);
 
+/// share_way, lead_way [R]: on odd ticks, the corner of the robot's way to `m.sighting` it tells at
+/// `tick` (work_out_way's, one after another): its index `k` and where it lies relative to `nest`
+/// [cm]. False on even ticks, and when the robot knows no such way.
+bool corner_to_tell(const Params& p, const Route& route, PfMemory& m, std::int64_t tick, Vec2 nest, int& k,
+                    Vec2& rel_cm);
+
 /// share_way [R]: a teller that knows a way to its sighting (its own trip's, or one heard whole)
 /// tells, on odd ticks, one corner of that way after another (work_out_way: at most ToldWay::kMax,
 /// from where the way began near the nest to its crumb nearest the sighting within R_vis +

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "rab_bytes.hpp"
+
 namespace swarmpath::sim {
 
 namespace {
@@ -201,33 +203,18 @@ TaMessage fetch_message(std::uint8_t my_id, int parent) {
 
 int fetch_for(const TaMessage& m) { return m.fetch() && m.state == kFetchState ? named_emitter(m) : kNobody; }
 
-namespace {
-
-void put_i16_be(RabPayload& b, std::size_t at, double v) {
-  const auto u =
-      static_cast<std::uint16_t>(static_cast<std::int16_t>(std::clamp(std::lround(v), -32767L, 32767L)));
-  b[at] = static_cast<std::uint8_t>(u >> 8);
-  b[at + 1] = static_cast<std::uint8_t>(u & 0xffU);
-}
-
-double get_i16_be(const RabPayload& b, std::size_t at) {
-  return static_cast<double>(static_cast<std::int16_t>(static_cast<std::uint16_t>((b[at] << 8) | b[at + 1])));
-}
-
-}  // namespace
-
 RabPayload way_message(std::uint8_t id, const WayCorner& c) {
   RabPayload p{};
   p[0] = id;
   p[2] = static_cast<std::uint8_t>(c.index);
   p[4] = static_cast<std::uint8_t>(MsgType::kWay);
   p[5] = static_cast<std::uint8_t>(c.count);
-  put_i16_be(p, 6, c.x_cm);
-  put_i16_be(p, 8, c.y_cm);
+  put_i16(p, 6, c.x_cm);
+  put_i16(p, 8, c.y_cm);
   return p;
 }
 
-WayCorner way_corner(const RabPayload& p) { return {p[2], p[5], get_i16_be(p, 6), get_i16_be(p, 8)}; }
+WayCorner way_corner(const RabPayload& p) { return {p[2], p[5], get_i16(p, 6), get_i16(p, 8)}; }
 
 RabKinds message_kinds(const TaMessage& m) {
   RabKinds k = 0;

@@ -213,7 +213,7 @@ struct WayCorner {
 };
 
 /// lead_way [R]: the payload of a corner: 0 id, 1 state 0 (no claim), 2 the index, 3 flags 0, 4 kWay,
-/// 5 the count, 6-7 and 8-9 x and y in cm (signed 16-bit, high byte first: +-327 m).
+/// 5 the count, 6-7 and 8-9 x and y in cm (rab_bytes.hpp: signed 16-bit, +-327 m).
 RabPayload way_message(std::uint8_t id, const WayCorner& c);
 
 /// The corner a kWay payload carries (way_message's inverse).
