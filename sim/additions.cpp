@@ -17,6 +17,7 @@ const std::array kAdditions{
   // sensing
   Addition{"led_ring", "a robot is seen by its LED ring, not only its centre", "§1.3 camera", kBoth, {{{"led_ring", 0}}}, {}},
   // exploring
+  Addition{"away_decay", "explorers back from fruitless trips lean less on the away field", "§2.1 fields, #4", kBoth, {{{"away_decay", 1}}}, {}},
   Addition{"w_seek", "explorers steer to the goal or a RED light in view", "§2.1, #1", kBoth, {{{"w_seek", 0}}}, {}},
   Addition{"T_trap", "edge following out of a field's minima", "§2.1 fields", kBoth, {{{"T_trap", 0}}}, {}},
   Addition{"site_fidelity", "a trip starts at the last sighting of the chain", "§2.3 #2", kBoth, {{{"site_fidelity", 0}}}, {}},

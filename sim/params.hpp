@@ -77,6 +77,7 @@ struct Params {
   // sensing (SPEC §1.3)
   bool led_ring = true;  ///< a robot is seen when the line to its centre or to its LED ring's edge is clear
   // exploring (SPEC §2.1, §2.3 rows #1, #2)
+  double away_decay = 0.7;          ///< row 18: w_away's factor per trip home without a sighting (1: none)
   double w_seek = 1.0;              ///< pull of an explorer toward the goal or RED light it sees (0: none)
   double t_trap = 100;              ///< ticks without progress before edge following and the trail (0: never)
   double trap_progress = 30;        ///< gain that counts as progress for T_trap [cm]

@@ -181,7 +181,7 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
   }
   const Avoidance avoid = diffusion(in.proximity, p);
   const Vec2 away = -field_toward(in.pose, mem.nest);
-  Vec2 v = avoid.direction + p.w_away * away + p.w_rw * in.pose.to_local(mem.walk_dir) + sight.repulsion;
+  Vec2 v = avoid.direction + m.w_away * away + p.w_rw * in.pose.to_local(mem.walk_dir) + sight.repulsion;
   if (sight.lure != nullptr) v += p.w_seek * sight.lure->dir;
   v *= p.v_max;
   return pf_drive(p, mem, v, PfState::kExploring);

@@ -72,6 +72,7 @@ void pf_init(PfMemory& m, const Params& p, PfRole role) {
   m = PfMemory{};
   m.role = role;
   m.t_explore = p.t_explore0;
+  m.w_away = p.w_away;
 }
 
 Command pf_drive(const Params& p, RobotMemory& mem, Vec2 v_cm_s, PfState s) {
@@ -146,7 +147,10 @@ void enter(const Percept& in, const Params& p, RobotMemory& mem, PfState to) {
   m.answering = -1;
   m.explore_leg = ExploreLeg::kWalk;
   if (to == PfState::kReturnToNest && !m.sighted_this_trip) m.has_sighting = false;  // a stale lead
-  if (to == PfState::kResting && !m.has_sighting) ++m.fruitless_trips;  // home without a sighting
+  if (to == PfState::kResting && !m.has_sighting) {  // home without a sighting
+    ++m.fruitless_trips;
+    m.w_away *= p.away_decay;  // R (away_decay): less of the away field on the next trip
+  }
   // R (route_to_sighting, walk_way, share_way): the way out of a trip that saw the chain, for the next trip
   // to it and to tell; a way heard from another robot is done with once the trip it led is over
   if (to == PfState::kReturnToNest) {

@@ -120,6 +120,7 @@ struct PfMemory {
   std::int64_t travel_ticks = 0;   ///< ticks spent travelling (to the sighting, following): not budget
   std::int64_t trip_start = 0;     ///< the tick this exploration trip began (TA t_source = elapsed)
   int fruitless_trips = 0;         ///< trips that ended back home without a sighting (share_after_trips)
+  double w_away = 0.5;             ///< away_decay: w_away times away_decay per fruitless trip
   bool knows_way = false;  ///< share_way: its route is a way to the sighting (its own, or heard whole)
   int tell_count = -1;     ///< share_way: corners of that way in tell_corners (-1: not worked out)
   Vec2 tell_for;           ///< share_way: the sighting they were worked out for [m]

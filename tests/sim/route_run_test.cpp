@@ -57,6 +57,7 @@ Travel run_far_door(const Params& p, Mode mode, std::uint64_t seed) {
 TEST(RouteToSighting, RobotsTrappedOnTheirWayBackToTheChainRetraceTheWayTheyCame) {
   Params off;                // the default: route_to_sighting = false
   off.retarget_tip = false;  // as measured: with it far_door forms these seeds without the rule
+  off.away_decay = 1.0;      // ... and every trip under the full away field
   Params on = off;
   on.route_to_sighting = true;
   for (const std::uint64_t seed : {1, 5, 6, 7}) {
@@ -80,6 +81,7 @@ TEST(RouteToSighting, RobotsTrappedOnTheirWayBackToTheChainRetraceTheWayTheyCame
 TEST(WalkWay, RobotsOfTaskAllocationWalkTheWayTheyCameBackToTheChain) {
   Params off;            // the default: walk_way = false
   off.lead_way = false;  // as measured: no robot walks the founder's way either
+  off.away_decay = 1.0;  // ... and every trip under the full away field
   ASSERT_FALSE(off.walk_way);
   Params on = off;
   on.walk_way = true;
@@ -114,6 +116,7 @@ TEST(WalkWay, RobotsOfTaskAllocationWalkTheWayTheyCameBackToTheChain) {
 TEST(ShareWay, ToldRobotsWalkTheWayTheTellerCameAndTravelFarLess) {
   Params off;
   off.share_after = 0;
+  off.away_decay = 1.0;  // as measured: every trip under the full away field
   ASSERT_FALSE(off.share_way);
   Params on = off;
   on.share_way = true;

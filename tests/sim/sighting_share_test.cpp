@@ -139,6 +139,7 @@ TEST(SightingShare, ListeningFromTheFirstTellingTickLeavesTheRunsAsTheyWere) {
   Params p;
   p.share_after = 3000;
   p.retarget_tip = false;  // the code whose hashes these are re-targeted by the distance to the nest alone
+  p.away_decay = 1.0;      // ... and explored under the full away field on every trip
   const Scenario s = with_robots(
       with_max_ticks(load_scenario(test::source_path("tests/data/small_serpentine.toml")), 8000), 40);
   FaultModel lossy;
@@ -224,6 +225,7 @@ TEST(SightingShare, TellingFromShareAfterLeavesAQuickSearchAsItWasAndHelpsASlowO
 TEST(SightingShare, TellingAfterFruitlessTripsComesWhenRobotsHaveSearchedInVain) {
   Params off;
   off.share_sighting = 0;
+  off.away_decay = 1.0;  // as measured: every trip under the full away field
   Params tick = off;
   tick.share_sighting = 300;  // share_after 15 000, the default
   Params trips = tick;

@@ -44,6 +44,7 @@ Outcome run_in(const char* arena, const Params& p, Mode mode, std::uint64_t seed
 TEST(SpotOnWay, TheChainGrowsTheWayTheRobotsCameToAFarDoorway) {
   Params off;                // the default: spot_on_way = false
   off.retarget_tip = false;  // as measured: with it far_door forms these seeds without the rule
+  off.away_decay = 1.0;      // ... and every trip under the full away field
   Params on = off;
   on.spot_on_way = true;
 

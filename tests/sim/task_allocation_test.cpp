@@ -662,6 +662,7 @@ TEST(TaRun, OneChainNoSideBranches) {
   const Scenario s = env1_with(60);
   Params p = load_params(test::source_path("genomes/paper-single.toml"));
   p.lead_way = false;
+  p.away_decay = 1.0;  // and every trip under the full away field, as measured
   ASSERT_TRUE(p.single_child && p.ta_backoff_spot && p.depart_gap > 0);
   Params fan = p;
   fan.single_child = false;
