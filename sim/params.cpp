@@ -76,7 +76,7 @@ const std::array kTable{
             "a robot is seen when the line to its centre or to either tangent point of its 9 cm LED ring is clear (ARGoS ray-casts every LED); off: the line to its centre only (SPEC's one blob per robot)",
             "§1.3 camera", {}},
   ParamInfo{ 0, "away_decay", R, &P::away_decay, 0.7, 0.3, 1, 0.05, "", "",
-            "an explorer's away-from-nest weight (w_away, row 18) is multiplied by this each time a trip of its ends back home without a sighting of the goal or the chain (row #4), so that a robot that has searched in vain leans more on its random walk and less on the straight-line field, which presses robots into the far walls of the nest's room and keeps them out of a room whose door leads back toward the nest (an allocation starts it afresh at w_away; 1: w_away always, as SPEC)",
+            "an explorer's away-from-nest weight (w_away, row 18) is multiplied by this each time a trip of its ends back home without a sighting of the goal or the chain (row #4), so that a robot that has searched in vain leans more on its random walk and less on the straight-line field, which presses every trip into the same far walls (an allocation starts it afresh at w_away; 1: w_away always, as SPEC)",
             "§2.1 fields, #4", {}},
   ParamInfo{ 0, "w_seek", R, &P::w_seek, 1, 0, 3, 0.05, "", "",
             "pull of an explorer toward the goal or RED light it sees within R_vis, until it is within d_detect (0: none; SPEC: it must pass within d_detect by chance)",
