@@ -25,6 +25,7 @@ const std::array kAdditions{
   Addition{"return_finds", "a robot going home takes the goal it finds", "§2.3 #1h, §2.6 T2", kBoth, {{{"return_finds", 0}}}, {}},
   Addition{"leaf_in_fan", "T_leaf counts only while another branch is in view", "§2.3 #21", kBoth, {{{"leaf_in_fan", 0}}}, {"T_leaf"}},
   Addition{"share_sighting", "robots at the nest tell each other where they saw the chain", "§2.3 #2, #4", kBoth, {{{"share_sighting", 0}}}, {"site_fidelity"}},
+  Addition{"resume_search", "a trip after a fruitless one explores on from where that one ended", "§2.1 exploring, #4", kBoth, {{{"resume_search", 0}}}, {}},
   Addition{"walk_way", "a trip to the sighting walks the way it was seen from", "§2.3 #2", kBoth, {{{"walk_way", 0}}}, {"site_fidelity"}},
   Addition{"share_way", "robots at the nest tell the way to where they saw the chain", "§2.3 #2, #4", kBoth, {{{"share_way", 0}}}, {"share_sighting", "site_fidelity"}},
   Addition{"lead_way", "the founder tells and leads along the way it found the goal", "§2.6 T5, T9", kTa, {{{"lead_way", 0}}}, {"share_goal", "site_fidelity"}},
@@ -72,8 +73,9 @@ const std::array kAdditions{
 
 // additions under trial: registered so that the ablation can measure them, off in the default
 // (docs/detours.md)
-constexpr std::array<std::string_view, 6> kOffInDefault{"spot_on_way", "way_after_edge", "leaf_in_fan",
-                                                        "route_to_sighting", "walk_way", "share_way"};
+constexpr std::array<std::string_view, 7> kOffInDefault{"spot_on_way",       "way_after_edge", "leaf_in_fan",
+                                                        "route_to_sighting", "walk_way",       "share_way",
+                                                        "resume_search"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
 constexpr std::array kSpecDefaults{

@@ -159,7 +159,42 @@ bool travel_to_sighting(const Percept& in, const Params& p, RobotMemory& mem, co
   return true;
 }
 
+// resume_search: the way ends at its last crumb, where the trip ended
+constexpr double kFrontierSeen = 0.01;  // [m]
+
+// R (resume_search): along the way of the last trip, which saw nothing, to where it ended; there, or
+// with a lure in view, the robot explores from where it stands. Travel, not budget (travel_cap
+// bounds it). False when the travel has just ended.
+bool travel_to_frontier(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight,
+                        bool in_crowd, Command& cmd) {
+  PfMemory& m = mem.pf;
+  if (sight.lure != nullptr || dist(in.pose.p, m.frontier) < 0.5) {
+    m.explore_leg = ExploreLeg::kWalk;
+    mem.walk_heading = in.pose.yaw();
+    mem.walk_dir = {in.pose.c, in.pose.s};
+    nav_reset(mem.nav);
+    return false;
+  }
+  ++m.travel_ticks;
+  if (!mem.route.begun_for(m.trip_start, m.frontier)) {
+    mem.route.set_trip(m.trip_start, m.frontier);
+    mem.route.begin(in.pose.p, m.frontier, kFrontierSeen, dist(in.pose.p, mem.nest));
+    nav_reset(mem.nav);
+  }
+  const Vec2 f = nav_route(in, p, mem.nav, mem.rng, mem.route, m.frontier, in_crowd);
+  cmd =
+      pf_drive(p, mem, p.v_max * (with_avoidance(in, p, mem.nav, f) + sight.repulsion), PfState::kExploring);
+  return true;
+}
+
 }  // namespace
+
+bool keep_frontier(RobotMemory& mem) {
+  if (mem.trail.size() < 2) return false;
+  mem.pf.frontier = mem.trail.crumb(mem.trail.size() - 1);
+  mem.route.keep(mem.trail);
+  return true;
+}
 
 Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
   mem.trail.record(in.pose.p);
@@ -173,6 +208,8 @@ Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
   const bool in_crowd = sight.nest_distance_cm < crowd_radius_cm(p, m);
   const bool travelling = m.explore_leg == ExploreLeg::kToSighting || m.explore_leg == ExploreLeg::kLead;
   if (travelling && travel_to_sighting(in, p, mem, sight, in_crowd, cmd)) return cmd;
+  if (m.explore_leg == ExploreLeg::kToFrontier && travel_to_frontier(in, p, mem, sight, in_crowd, cmd))
+    return cmd;
   // away from the nest; the obstacle's edge when the field traps the robot (no lure in view)
   if (sight.lure == nullptr) {
     const bool trapped = nav_update(mem.nav, p, mem.rng, sight.nest_distance_cm, in,

@@ -24,6 +24,10 @@ void grow_budget(const PfContext& c, PfMemory& m);
 /// The first leg of a trip: to the last sighting first (site_fidelity), else exploring.
 ExploreLeg first_leg(const Params& p, const PfMemory& m);
 
+/// resume_search [R]: keeps the trip's way (its breadcrumbs) and where it ended, for the next trip to
+/// travel along before it explores; false when the trip left no way (fewer than two crumbs).
+bool keep_frontier(RobotMemory& mem);
+
 /// EXPLORING (LED green): V = v_max (D + w_away F_away(nest) + w_rw u_phi + R), after the trip's
 /// travel legs; the obstacle's edge when the robot can get no farther from the nest.
 Command explore(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight);

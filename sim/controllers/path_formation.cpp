@@ -147,6 +147,8 @@ void enter(const Percept& in, const Params& p, RobotMemory& mem, PfState to) {
   m.answering = -1;
   m.explore_leg = ExploreLeg::kWalk;
   if (to == PfState::kReturnToNest && !m.sighted_this_trip) m.has_sighting = false;  // a stale lead
+  // R (resume_search): a trip home without a sighting keeps its way, for the next trip to resume
+  if (to == PfState::kReturnToNest) m.resume = p.resume_search && !m.has_sighting && keep_frontier(mem);
   if (to == PfState::kResting && !m.has_sighting) {  // home without a sighting
     ++m.fruitless_trips;
     m.w_away *= p.away_decay;  // R (away_decay): less of the away field on the next trip
@@ -167,6 +169,7 @@ void enter(const Percept& in, const Params& p, RobotMemory& mem, PfState to) {
     m.sighted_this_trip = false;
     mem.trail.reset(in.pose.p);
     m.explore_leg = first_leg(p, m);
+    if (m.explore_leg == ExploreLeg::kWalk && m.resume) m.explore_leg = ExploreLeg::kToFrontier;
     m.travel_ticks = 0;
     m.trip_start = in.tick;
   }

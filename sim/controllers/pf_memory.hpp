@@ -48,6 +48,7 @@ enum class ExploreLeg : std::uint8_t {
   kFollowThenWalk,      ///< guided_departure: following the CYAN guides (not budget), then exploring
   kFollowThenSighting,  ///< guided_departure: following the CYAN guides, then to the sighting
   kTripOver,            ///< sighting_returns: row #2 ends the trip
+  kToFrontier,          ///< resume_search: along the last fruitless trip's way to where it ended (not budget)
 };
 
 /// SUBGOAL_FORMING's legs.
@@ -120,7 +121,9 @@ struct PfMemory {
   std::int64_t travel_ticks = 0;   ///< ticks spent travelling (to the sighting, following): not budget
   std::int64_t trip_start = 0;     ///< the tick this exploration trip began (TA t_source = elapsed)
   int fruitless_trips = 0;         ///< trips that ended back home without a sighting (share_after_trips)
-  double w_away = 0.5;             ///< away_decay: w_away times away_decay per fruitless trip
+  bool resume = false;     ///< resume_search: the route holds the way of its last trip, which saw nothing
+  Vec2 frontier;           ///< resume_search: where that trip ended [m]
+  double w_away = 0.5;     ///< away_decay: w_away times away_decay per fruitless trip
   bool knows_way = false;  ///< share_way: its route is a way to the sighting (its own, or heard whole)
   int tell_count = -1;     ///< share_way: corners of that way in tell_corners (-1: not worked out)
   Vec2 tell_for;           ///< share_way: the sighting they were worked out for [m]
