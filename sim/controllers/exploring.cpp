@@ -108,6 +108,13 @@ Command wait_by_forming_robot(const Percept& in, const Params& p, RobotMemory& m
   return pf_drive(p, mem, p.v_max * v, PfState::kExploring);
 }
 
+// a travel leg over: the random walk goes on along the robot's heading, from where it stands
+void walk_on_from_here(const Pose& pose, RobotMemory& mem) {
+  mem.walk_heading = pose.yaw();
+  mem.walk_dir = {pose.c, pose.s};
+  nav_reset(mem.nav);
+}
+
 // site fidelity: travelling to the sighting (the founder leading at guide_speed, CYAN); there, or
 // with a lure in view, the robot explores from where it stands, or (sighting_returns) with nothing
 // free there, its trip is over: the tip has moved nestward, past this robot, and its way home
@@ -120,9 +127,7 @@ bool travel_to_sighting(const Percept& in, const Params& p, RobotMemory& mem, co
     const bool nothing_there = p.sighting_returns && claims_links(p, m) && sight.lure == nullptr;
     m.explore_leg = nothing_there ? ExploreLeg::kTripOver : ExploreLeg::kWalk;
     m.answering = -1;
-    mem.walk_heading = in.pose.yaw();
-    mem.walk_dir = {in.pose.c, in.pose.s};
-    nav_reset(mem.nav);
+    walk_on_from_here(in.pose, mem);
     return false;
   }
   // R (walk_way: task allocation; share_way: path formation; lead_way: the founder's, told at the
@@ -170,9 +175,7 @@ bool travel_to_frontier(const Percept& in, const Params& p, RobotMemory& mem, co
   PfMemory& m = mem.pf;
   if (sight.lure != nullptr || dist(in.pose.p, m.frontier) < 0.5) {
     m.explore_leg = ExploreLeg::kWalk;
-    mem.walk_heading = in.pose.yaw();
-    mem.walk_dir = {in.pose.c, in.pose.s};
-    nav_reset(mem.nav);
+    walk_on_from_here(in.pose, mem);
     return false;
   }
   ++m.travel_ticks;
