@@ -73,9 +73,8 @@ const std::array kAdditions{
 
 // additions under trial: registered so that the ablation can measure them, off in the default
 // (docs/detours.md)
-constexpr std::array<std::string_view, 7> kOffInDefault{"spot_on_way",       "way_after_edge", "leaf_in_fan",
-                                                        "route_to_sighting", "walk_way",       "share_way",
-                                                        "resume_search"};
+constexpr std::array<std::string_view, 6> kOffInDefault{"spot_on_way",       "way_after_edge", "leaf_in_fan",
+                                                        "route_to_sighting", "walk_way",       "share_way"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
 constexpr std::array kSpecDefaults{

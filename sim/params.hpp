@@ -113,10 +113,10 @@ struct Params {
       false;  ///< site_fidelity: a trip to the sighting walks the way it was seen from, from the start
   bool share_way = false;          ///< share_sighting: the teller tells its own way there, corner by corner
   bool route_to_sighting = false;  ///< site_fidelity: travel to the sighting along the way it was seen from
-  bool resume_search = false;      ///< #4: a trip after a fruitless one starts where that one ended
+  bool resume_search = true;       ///< #4: a trip after a fruitless one starts where that one ended
   bool lead_way = true;         ///< share_goal: the founder tells and leads along the way it found the goal
   double share_sighting = 300;  ///< pf: robots this near the nest tell where they saw the chain [cm] (0: off)
-  double share_after = 15000;   ///< share_sighting: telling begins at this tick of the run [ticks]
+  double share_after = 12500;   ///< share_sighting: telling begins at this tick of the run [ticks]
   double share_after_trips =
       0;  ///< share_sighting: a robot tells / listens after this many fruitless trips (0: share_after)
   // aligning (SPEC §2.4, rows #10-#13) and the chain's links

@@ -65,7 +65,8 @@ TEST(AwayDecay, EachTripHomeWithoutASightingWeakensTheAwayFieldByItsFactor) {
 // by the full away field the path does not form within T_max; with away_decay it forms (the screen's
 // case, docs/detours.md). The chain of runs differs from the scouts' first fruitless trips on.
 TEST(AwayDecay, AWallWithAFarDoorwayFormsWhenSearchersLeanLessOnTheAwayField) {
-  const Params on;  // the default
+  Params on;                 // the default
+  on.resume_search = false;  // as measured: every trip explores from the nest (with it both form)
   Params off = on;
   off.away_decay = 1.0;
   const Scenario s = load_scenario(test::source_path("tests/data/wallfar_13.toml"));

@@ -147,10 +147,11 @@ TEST(PfRun, RobotsThatFindTheGoalFromItsFarSideDoNotPileUpRoundIt) {
   // 30 cm seed 3 fails either way, its formation broken by recovery robots round the goal)
   Params far_spot;
   far_spot.trap_progress = 5;
-  far_spot.form_retries = 0;      // and robots that lose their target turn RECOVERY, as they did then
-  far_spot.t_leaf = 0;            // and RED robots round the goal stay there (T_leaf thins that crowd too)
-  far_spot.retarget_tip = false;  // and row #5r re-targets by the distance to the nest alone
-  far_spot.away_decay = 1.0;      // and every trip explores under the full away field
+  far_spot.form_retries = 0;       // and robots that lose their target turn RECOVERY, as they did then
+  far_spot.t_leaf = 0;             // and RED robots round the goal stay there (T_leaf thins that crowd too)
+  far_spot.retarget_tip = false;   // and row #5r re-targets by the distance to the nest alone
+  far_spot.away_decay = 1.0;       // and every trip explores under the full away field
+  far_spot.resume_search = false;  // and from the nest
   Params trail_only = far_spot;
   trail_only.backoff_far_spot = false;
   trail_only.trail_slack = 3000;  // stopping anywhere on the way home (3000 cm: no bound)
@@ -185,7 +186,8 @@ TEST(Determinism, GoldenHashPathFormationShortChain) {
   // form_retries = 3 in the default (a robot that loses its target goes home, not RECOVERY), 1666 -> 1792
   // align_taper and r_keep_pull removed (the alignment is SPEC §2.4's V = v_align v_max P/|P| + D), -> 1445
   // away_decay = 0.7 in the default (the away field weakens per trip home without a sighting), -> 1436
-  constexpr std::uint64_t kExpected = 0x426e2cf9c9daf3f5ULL;  // a complete run: 1436 ticks
+  // resume_search in the default (a trip after a fruitless one starts where that one ended), -> 1453
+  constexpr std::uint64_t kExpected = 0x6917ffcf0853b73aULL;  // a complete run: 1453 ticks
   const Metrics m = evaluate(Params{}, short_chain(), Mode::kPathFormation, 1);
   EXPECT_EQ(m.state_hash, kExpected) << "actual state_hash 0x" << to_hex(m.state_hash) << " (ticks "
                                      << m.ticks << ")";

@@ -57,14 +57,15 @@ Frontiers watch_frontiers(const Params& p) {
 }
 
 TEST(ResumeSearch, ATripAfterAFruitlessOneTravelsToWhereThatOneTurnedHome) {
-  Params on;
-  ASSERT_FALSE(on.resume_search);  // under trial, off in the default
-  on.resume_search = true;
+  const Params on;
+  ASSERT_TRUE(on.resume_search);  // in the default
+  Params off = on;
+  off.resume_search = false;
   const Frontiers with = watch_frontiers(on);
   EXPECT_GE(with.trips, 10);
   EXPECT_EQ(with.mismatches, 0);
   EXPECT_GT(2 * with.arrived, with.trips);  // most travels along the kept way get there
-  const Frontiers without = watch_frontiers(Params{});
+  const Frontiers without = watch_frontiers(off);
   EXPECT_EQ(without.trips, 0);
 }
 
@@ -73,9 +74,9 @@ TEST(ResumeSearch, ATripAfterAFruitlessOneTravelsToWhereThatOneTurnedHome) {
 // first 12 000 ticks: every trip explored from the nest reaches no robot within R_vis of the goal;
 // trips that resume where the last one turned home do (docs/detours.md: 26 611 against 9 587 ticks)
 TEST(ResumeSearch, TheGoalBehindTwoRoomsIsReachedWhenTripsResume) {
-  const Params off;
-  Params on = off;
-  on.resume_search = true;
+  const Params on;
+  Params off = on;
+  off.resume_search = false;
   const Scenario s = with_max_ticks(load_scenario(test::source_path("tests/data/rooms_1.toml")), 12000);
   const Metrics without = evaluate(off, s, Mode::kPathFormation, 21);
   const Metrics with = evaluate(on, s, Mode::kPathFormation, 21);

@@ -48,7 +48,9 @@ Outcome run_serpentine(const Params& p, std::uint64_t seed) {
 TEST(RetargetTip, FormingRobotsKeepToTheTipsAndThePathFormsRoundTheWalls) {
   Params on;  // the default: retarget_tip = true
   ASSERT_TRUE(on.retarget_tip);
-  on.away_decay = 1.0;  // as measured: every trip under the full away field (with it on: 7 of 8)
+  on.away_decay = 1.0;       // as measured: every trip under the full away field (with it on: 7 of 8)
+  on.resume_search = false;  // ... explored from the nest
+  on.share_after = 15000;    // ... and sightings told from tick 15 000
   Params off = on;
   off.retarget_tip = false;
   int formed_off = 0, formed_on = 0, sooner = 0, both = 0, lost_off = 0, lost_on = 0;

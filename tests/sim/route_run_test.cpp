@@ -55,9 +55,10 @@ Travel run_far_door(const Params& p, Mode mode, std::uint64_t seed) {
 // travel_cap ends their trips; with it they turn along the way they came once the field traps them.
 // Task allocation: 7 -> 8 formed (seed 7).
 TEST(RouteToSighting, RobotsTrappedOnTheirWayBackToTheChainRetraceTheWayTheyCame) {
-  Params off;                // the default: route_to_sighting = false
-  off.retarget_tip = false;  // as measured: with it far_door forms these seeds without the rule
-  off.away_decay = 1.0;      // ... and every trip under the full away field
+  Params off;                 // the default: route_to_sighting = false
+  off.retarget_tip = false;   // as measured: with it far_door forms these seeds without the rule
+  off.away_decay = 1.0;       // ... and every trip under the full away field
+  off.resume_search = false;  // ... explored from the nest
   Params on = off;
   on.route_to_sighting = true;
   for (const std::uint64_t seed : {1, 5, 6, 7}) {
@@ -79,9 +80,10 @@ TEST(RouteToSighting, RobotsTrappedOnTheirWayBackToTheChainRetraceTheWayTheyCame
 // against the wall until travel_cap ends their trips); the other seeds form within 1 200 ticks of
 // off, six of them walking a kept way for 500-4 000 robot-ticks.
 TEST(WalkWay, RobotsOfTaskAllocationWalkTheWayTheyCameBackToTheChain) {
-  Params off;            // the default: walk_way = false
-  off.lead_way = false;  // as measured: no robot walks the founder's way either
-  off.away_decay = 1.0;  // ... and every trip under the full away field
+  Params off;                 // the default: walk_way = false
+  off.lead_way = false;       // as measured: no robot walks the founder's way either
+  off.away_decay = 1.0;       // ... and every trip under the full away field
+  off.resume_search = false;  // ... explored from the nest
   ASSERT_FALSE(off.walk_way);
   Params on = off;
   on.walk_way = true;
@@ -116,7 +118,8 @@ TEST(WalkWay, RobotsOfTaskAllocationWalkTheWayTheyCameBackToTheChain) {
 TEST(ShareWay, ToldRobotsWalkTheWayTheTellerCameAndTravelFarLess) {
   Params off;
   off.share_after = 0;
-  off.away_decay = 1.0;  // as measured: every trip under the full away field
+  off.away_decay = 1.0;       // as measured: every trip under the full away field
+  off.resume_search = false;  // ... explored from the nest
   ASSERT_FALSE(off.share_way);
   Params on = off;
   on.share_way = true;
@@ -148,8 +151,9 @@ TEST(ShareWay, ToldRobotsWalkTheWayTheTellerCameAndTravelFarLess) {
 // the field, into the wall, and the path does not form within T_max; with it they walk the
 // founder's way through the doorway and the path forms.
 TEST(LeadWay, AllocatedRobotsWalkTheWayTheFounderFoundTheGoalBy) {
-  const Params on;  // the default
+  Params on;  // the default
   ASSERT_TRUE(on.lead_way);
+  on.resume_search = false;  // as measured: every trip explores from the nest
   Params off = on;
   off.lead_way = false;
   const Travel without = run_arena("tests/data/wallfar_11.toml", off, Mode::kTaskAllocation, 21);

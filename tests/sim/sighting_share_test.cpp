@@ -138,8 +138,9 @@ TEST(SightingShare, AMessageToldAtTheFirstTellingTickIsHeardTheNextTick) {
 TEST(SightingShare, ListeningFromTheFirstTellingTickLeavesTheRunsAsTheyWere) {
   Params p;
   p.share_after = 3000;
-  p.retarget_tip = false;  // the code whose hashes these are re-targeted by the distance to the nest alone
-  p.away_decay = 1.0;      // ... and explored under the full away field on every trip
+  p.retarget_tip = false;   // the code whose hashes these are re-targeted by the distance to the nest alone
+  p.away_decay = 1.0;       // ... and explored under the full away field on every trip
+  p.resume_search = false;  // ... from the nest
   const Scenario s = with_robots(
       with_max_ticks(load_scenario(test::source_path("tests/data/small_serpentine.toml")), 8000), 40);
   FaultModel lossy;
@@ -179,8 +180,9 @@ void expect_told_robots_lay_more_links(const Params& off, const Params& with) {
 TEST(SightingShare, ToldRobotsLayTheChainThroughASerpentineSooner) {
   Params off;
   off.share_sighting = 0;
-  off.t_leaf = 0;            // as measured (beside T_leaf = 1500 the same seeds give 112 -> 146)
-  off.retarget_tip = false;  // as measured
+  off.t_leaf = 0;             // as measured (beside T_leaf = 1500 the same seeds give 112 -> 146)
+  off.retarget_tip = false;   // as measured
+  off.resume_search = false;  // as measured: every trip explores from the nest
   Params on = off;
   on.share_sighting = 300;
   on.share_after = 0;  // from the start of the run
@@ -196,7 +198,8 @@ TEST(SightingShare, TellingFromShareAfterLeavesAQuickSearchAsItWasAndHelpsASlowO
   const Scenario quick = load_scenario(test::source_path("tests/data/short_chain.toml"));
   Params off;
   off.share_sighting = 0;
-  off.retarget_tip = false;  // as measured
+  off.retarget_tip = false;   // as measured
+  off.resume_search = false;  // as measured: every trip explores from the nest
   Params from_start = off;
   from_start.share_sighting = 300;
   from_start.share_after = 0;
@@ -220,14 +223,15 @@ TEST(SightingShare, TellingFromShareAfterLeavesAQuickSearchAsItWasAndHelpsASlowO
 // share_after_trips [R]: robots that have come home from that many trips without a sighting tell and
 // listen, whatever the tick. A quick search (short_chain, 20 robots, seed 1, formed at tick 1 445, before
 // any robot has come home twice) runs as without sharing with 2 trips, and is changed with 1 (formed at
-// 1 436). In small_serpentine (40 robots, seeds 1-8, 8 000 ticks) the default's tick 15 000 is never
+// 1 436). In small_serpentine (40 robots, seeds 1-8, 8 000 ticks) the default's tick 12 500 is never
 // reached and every run is the one without sharing; with 2 trips the telling changes every run.
 TEST(SightingShare, TellingAfterFruitlessTripsComesWhenRobotsHaveSearchedInVain) {
   Params off;
   off.share_sighting = 0;
-  off.away_decay = 1.0;  // as measured: every trip under the full away field
+  off.away_decay = 1.0;       // as measured: every trip under the full away field
+  off.resume_search = false;  // ... explored from the nest
   Params tick = off;
-  tick.share_sighting = 300;  // share_after 15 000, the default
+  tick.share_sighting = 300;  // share_after 12 500, the default
   Params trips = tick;
   trips.share_after_trips = 2;
   Params one = tick;
