@@ -115,7 +115,7 @@ void restart_progress(NavMemory& nav) {
 }  // namespace
 
 Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest,
-              double trap_ticks, const Vec2* field_point, double trail_within) {
+              double trap_ticks, const Vec2* field_point, double trail_within, bool retrace) {
   const double trap = trap_ticks > 0.0 ? trap_ticks : p.t_trap;
   // trapped by the field with a trail to retrace: switch to the trail for the rest of the way
   if (!nav.on_trail) trail.touch(in.pose.p);
@@ -123,6 +123,9 @@ Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trai
     nav.on_trail = true;
     trail.start_home_within(in.pose.p, nest, trail_within);
     restart_progress(nav);
+    // R founder_retrace: a trail home that is the nest alone adds nothing to the field that trapped
+    // the robot (the nest behind a wall): back to where it last was on its way, home from there
+    if (retrace && trail.size() <= 1) nav.fell_back = trail.fall_back();
   }
   if (!nav.on_trail) {
     const Vec2 point = field_point != nullptr ? *field_point : nest;

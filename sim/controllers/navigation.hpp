@@ -63,10 +63,12 @@ Vec2 nav_toward(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Ve
 /// `trap_ticks` (default T_trap) is how long the field may make no progress before the trail;
 /// a window shorter than T_trap asks for trap_progress pro rata (a quarter of T_trap: a quarter of
 /// trap_progress), the same rate of progress as T_trap does. The field pulls toward `field_point`
-/// (default: the nest itself).
+/// (default: the nest itself). `retrace` [R founder_retrace]: a trail home that would begin at its
+/// first crumb (where the trip began: the nest, what the field already steers at) begins instead
+/// where the robot last was on its way (Trail::fall_back), also near the nest.
 Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trail& trail, Vec2 nest,
               double trap_ticks = -1.0, const Vec2* field_point = nullptr,
-              double trail_within = Trail::kEverywhere);
+              double trail_within = Trail::kEverywhere, bool retrace = false);
 
 /// Toward `to` along `route` [R route_to_sighting]: crumb after crumb, progress measured along the way
 /// left (as nav_home's trail), a crumb it cannot reach passed over after T_trap ticks without progress;

@@ -9,11 +9,12 @@
 namespace swarmpath::sim {
 
 Command drive_to(const Percept& in, const Params& p, RobotMemory& mem, Vec2 point, double stop_within_cm,
-                 Led led) {
+                 Led led, bool retrace) {
   Command cmd;
   cmd.led = led;
   if (kCmPerM * dist(in.pose.p, point) <= stop_within_cm) return cmd;
-  const Vec2 f = point == mem.nest ? nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest)
+  const Vec2 f = point == mem.nest ? nav_home(in, p, mem.nav, mem.rng, mem.trail, mem.nest, -1.0, nullptr,
+                                              Trail::kEverywhere, retrace)
                                    : nav_toward(in, p, mem.nav, mem.rng, point);
   const Vec2 v = p.v_max * with_avoidance(in, p, mem.nav, f);
   return drive_command(v, p, mem.turn, led);

@@ -16,8 +16,9 @@ namespace swarmpath::sim {
 struct RobotMemory;
 
 /// To `point` (the nest: along the robot's trail once the field traps it) and stop within reach.
+/// `retrace`: nav_home's (founder_retrace).
 Command drive_to(const Percept& in, const Params& p, RobotMemory& mem, Vec2 point, double stop_within_cm,
-                 Led led);
+                 Led led, bool retrace = false);
 
 /// recruit_call [R]: the nearest subgoal calling for a link that no robot on the medium claims.
 const RabMessage* unanswered_call(std::span<const RabMessage> inbox);

@@ -196,6 +196,8 @@ void refound(const TaContext& c, RobotMemory& mem) {
   m.protocol_started = false;
   m.protocol = FounderProtocol{};
   m.n = 0;
+  m.nest_best_cm = 1e18;  // founder_in_crowd: a new way to the nest
+  m.held = 0;
   mem.pf.sighting = mem.pf.parent.last_seen;
   mem.pf.has_sighting = true;
   mem.pf.trip_start = c.in.tick;
@@ -237,10 +239,25 @@ bool joined(std::uint8_t founder, std::span<const RabMessage> inbox) {
 }
 
 // GOAL_FOUNDER (LED cyan): back to the nest (TA c / PF k); there it runs the protocol (T4)
+// R founder_in_crowd: a founder before its protocol that the robots waiting at the nest hold off
+// (within nest_crowd, a CYAN or GRAY80 light in view, no nearer by trap_progress for T_trap ticks)
+bool held_off_the_nest(const Params& p, TaMemory& m, const TaSight& sight) {
+  if (!p.founder_in_crowd || m.protocol_started) return false;
+  if (sight.nest_distance_cm < m.nest_best_cm - p.trap_progress) {
+    m.nest_best_cm = sight.nest_distance_cm;
+    m.held = 0;
+  } else {
+    ++m.held;
+  }
+  return sight.founder_or_dm_seen && sight.nest_distance_cm <= p.nest_crowd &&
+         static_cast<double>(m.held) >= p.t_trap;
+}
+
 Command found(const Percept& in, const Params& p, RobotMemory& mem, int swarm, bool at_nest) {
   TaMemory& m = mem.ta;
   const auto id = static_cast<std::uint8_t>(in.id);
-  const Command cmd = drive_to(in, p, mem, mem.nest, p.founder_wait * p.r_nest_reach, Led::kCyan);
+  const Command cmd = drive_to(in, p, mem, mem.nest, p.founder_wait * p.r_nest_reach, Led::kCyan,
+                               p.founder_retrace && !m.protocol_started);  // R founder_retrace
   if (at_nest && !m.protocol_started) {
     m.protocol_started = true;
     // refound_starved: n from the trip home (Eq. 1-3 with t its time, whatever t_source says, and
@@ -364,6 +381,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
   if (ta_transition(c, mem) != nullptr) nav_reset(mem.nav);
   ++m.t_state;
   const bool at_nest = sight.nest_distance_cm <= p.r_nest_reach;
+  const bool held_off = m.state == TaState::kGoalFounder && held_off_the_nest(p, m, sight);
 
   Command cmd;
   switch (m.state) {
@@ -381,7 +399,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
         tell_founder_way(in.tick, in.id, p, mem, cmd);
       break;
     case TaState::kGoalFounder:
-      cmd = found(in, p, mem, swarm, at_nest);
+      cmd = found(in, p, mem, swarm, at_nest || held_off);
       break;
     case TaState::kDecisionMaker:
       // gather at the nest; answer a requesting founder with JOIN

@@ -43,6 +43,8 @@ struct TaMemory {
   FounderProtocol protocol;
   std::int64_t alloc_done_tick = -1;  ///< the tick it first broadcast DONE (T_alloc)
   int allocated = -1;                 ///< then: robots allocated, itself included when it counts itself
+  double nest_best_cm = 1e18;         ///< founder_in_crowd [R]: its least distance to the nest so far [cm]
+  std::int64_t held = 0;              ///< ... ticks since that improved by trap_progress
   // decision maker
   std::int64_t waited = 0;       ///< ticks at the nest without hearing a REQUEST
   std::int64_t depart_tick = 0;  ///< allocated: the tick it leaves the nest (depart_gap) [R]
