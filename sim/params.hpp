@@ -115,6 +115,7 @@ struct Params {
   bool route_to_sighting = false;  ///< site_fidelity: travel to the sighting along the way it was seen from
   bool resume_search = true;       ///< #4: a trip after a fruitless one starts where that one ended
   bool lead_way = true;         ///< share_goal: the founder tells and leads along the way it found the goal
+  bool way_home_leg = false;    ///< lead_way: a kept way goes on along the leg walked home by the field
   double share_sighting = 300;  ///< pf: robots this near the nest tell where they saw the chain [cm] (0: off)
   double share_after = 12500;   ///< share_sighting: telling begins at this tick of the run [ticks]
   double share_after_trips =

@@ -12,7 +12,7 @@ namespace swarmpath::sim {
 
 void keep_founder_way(const Params& p, RobotMemory& mem) {
   if (!p.lead_way) return;
-  mem.route.keep(mem.trail);
+  mem.route.keep(mem.trail, p.way_home_leg);
   mem.pf.knows_way = true;
   mem.pf.tell_count = -1;
 }

@@ -119,6 +119,7 @@ Vec2 nav_home(const Percept& in, const Params& p, NavMemory& nav, Rng& rng, Trai
   const double trap = trap_ticks > 0.0 ? trap_ticks : p.t_trap;
   // trapped by the field with a trail to retrace: switch to the trail for the rest of the way
   if (!nav.on_trail) trail.touch(in.pose.p);
+  if (p.way_home_leg && !nav.on_trail) trail.record_home(in.pose.p);  // R: path integration goes on
   if (p.trail_home && !nav.on_trail && !trail.empty() && trapped(nav, p, trap)) {
     nav.on_trail = true;
     trail.start_home_within(in.pose.p, nest, trail_within);

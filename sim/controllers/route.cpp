@@ -8,6 +8,7 @@ namespace swarmpath::sim {
 
 namespace {
 constexpr double kPassed = 0.25;    // [m] a crumb this near is passed (the trail's spacing)
+constexpr double kLoop = 0.25;      // [m] back this near a kept crumb: a loop (as the trail's erasure)
 constexpr int kLookAhead = 8;       // crumbs ahead checked for a short cut
 constexpr double kCornerTol = 0.1;  // [m] a crumb this near the line between kept neighbours is dropped
 
@@ -21,12 +22,12 @@ double to_segment(Vec2 p, Vec2 a, Vec2 b) {
 
 // Douglas-Peucker over crumbs [0, n): marks in `keep` the crumbs farther than `tol` from the line
 // between the kept ones around them (an explicit stack of spans, no recursion, no allocation)
-int simplify(const std::array<Vec2, Trail::kCapacity>& c, int n, double tol,
-             std::array<bool, Trail::kCapacity>& keep) {
+int simplify(const std::array<Vec2, Route::kCapacity>& c, int n, double tol,
+             std::array<bool, Route::kCapacity>& keep) {
   std::fill(keep.begin(), keep.end(), false);
   keep[0] = true;
   keep[static_cast<std::size_t>(n - 1)] = true;
-  std::array<std::array<int, 2>, Trail::kCapacity> stack{};
+  std::array<std::array<int, 2>, Route::kCapacity> stack{};
   int top = 0;
   stack[0] = {0, n - 1};
   ++top;
@@ -53,7 +54,7 @@ int simplify(const std::array<Vec2, Trail::kCapacity>& c, int n, double tol,
 }  // namespace
 
 void Route::assign(std::span<const Vec2> points) {
-  count_ = static_cast<int>(std::min<std::size_t>(points.size(), Trail::kCapacity));
+  count_ = static_cast<int>(std::min<std::size_t>(points.size(), kCapacity));
   for (int i = 0; i < count_; ++i) crumbs_[static_cast<std::size_t>(i)] = points[static_cast<std::size_t>(i)];
   next_ = 0;
   end_ = 0;
@@ -81,7 +82,7 @@ int Route::corners(Vec2 to, double seen, std::span<Vec2> out) const {
     out[0] = crumbs_[static_cast<std::size_t>(last)];
     return 1;
   }
-  std::array<bool, Trail::kCapacity> keep{};
+  std::array<bool, kCapacity> keep{};
   double tol = kCornerTol;
   while (simplify(crumbs_, n, tol, keep) > static_cast<int>(out.size())) tol *= 2.0;
   int k = 0;
@@ -91,9 +92,20 @@ int Route::corners(Vec2 to, double seen, std::span<Vec2> out) const {
   return k;
 }
 
-void Route::keep(const Trail& trail) {
+void Route::keep(const Trail& trail, bool home_leg) {
   count_ = trail.size();
   for (int i = 0; i < count_; ++i) crumbs_[static_cast<std::size_t>(i)] = trail.crumb(i);
+  for (int h = 0; home_leg && h < trail.home_size(); ++h) {
+    const Vec2 c = trail.home_crumb(h);
+    int back = -1;  // loop erasure: back near a kept crumb, the way since then was a detour
+    for (int i = 0; i + 2 < count_ && back < 0; ++i)
+      if (dist(c, crumbs_[static_cast<std::size_t>(i)]) < kLoop) back = i;
+    if (back >= 0) {
+      count_ = back + 1;
+    } else {
+      crumbs_[static_cast<std::size_t>(count_++)] = c;
+    }
+  }
   next_ = 0;
   end_ = 0;
   trip_ = -1;

@@ -14,9 +14,13 @@ namespace swarmpath::sim {
 
 class Route {
  public:
+  static constexpr int kCapacity = Trail::kCapacity + Trail::kHomeCapacity;
+
   /// Keeps the trail's crumbs, from the nest outward (the trail's remaining crumbs: a way home that
-  /// has been walked in part leaves the crumbs nearer the nest).
-  void keep(const Trail& trail);
+  /// has been walked in part leaves the crumbs nearer the nest); with `home_leg` [R way_home_leg],
+  /// the crumbs of the leg home by the field after them, a crumb back within 25 cm of a kept one
+  /// cutting the way back to it (loop erasure, as Trail::record).
+  void keep(const Trail& trail, bool home_leg = false);
 
   /// Replaces the kept crumbs with `points` (a way told by another robot [R share_way], from the nest
   /// outward; at most kCapacity are kept).
@@ -63,7 +67,7 @@ class Route {
   // the kept crumb nearest `to` within `seen` of it (-1: none)
   int nearest_within(Vec2 to, double seen) const;
 
-  std::array<Vec2, Trail::kCapacity> crumbs_{};
+  std::array<Vec2, kCapacity> crumbs_{};
   int count_ = 0;
   int next_ = 0;  // the next crumb to walk to
   int end_ = 0;   // one past the last crumb of the way

@@ -121,8 +121,9 @@ void become_founder(const TaContext& c, RobotMemory& mem) {
                              ? mem.pf.t_explore
                              : static_cast<double>(c.in.tick - mem.pf.trip_start);
   mem.ta.t_founder_s = seconds(t_ticks);
-  if (c.p.route_to_sighting) mem.route.keep(mem.trail);  // R: the way it found the goal, to lead along
-  keep_founder_way(c.p, mem);                            // R lead_way: and to tell
+  if (c.p.route_to_sighting)
+    mem.route.keep(mem.trail, c.p.way_home_leg);  // R: the way it found the goal, to lead along
+  keep_founder_way(c.p, mem);                     // R lead_way: and to tell
   mem.ta.n = robots_needed(mem.ta.t_founder_s, c.p.v_max, c.p.r_vis, delta_for(c.p, mem.env_class),
                            static_cast<int>(c.p.n_min), c.swarm);
 }
@@ -201,8 +202,9 @@ void refound(const TaContext& c, RobotMemory& mem) {
   mem.pf.sighting = mem.pf.parent.last_seen;
   mem.pf.has_sighting = true;
   mem.pf.trip_start = c.in.tick;
-  if (c.p.route_to_sighting) mem.route.keep(mem.trail);  // R: its way out to the chain's end, to lead along
-  keep_founder_way(c.p, mem);                            // R lead_way: and to tell
+  if (c.p.route_to_sighting)
+    mem.route.keep(mem.trail, c.p.way_home_leg);  // R: its way out to the chain's end, to lead along
+  keep_founder_way(c.p, mem);                     // R lead_way: and to tell
 }
 
 // clang-format off

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 namespace swarmpath::sim {
 
@@ -25,10 +26,34 @@ double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
   const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
   return dist(p, a + t * ab);
 }
+
+// Halves the crumbs [0, count), dropping one at a time the crumb that lies nearest the straight line
+// between its neighbours (ties: the earlier one): the corners where the way turned round an obstacle
+// stay, so that no leg of the thinned way cuts through it; the straight stretches thin out. The first
+// and last crumbs stay.
+void thin(std::span<Vec2> c, int& count) {
+  const int target = static_cast<int>(c.size()) / 2;
+  while (count > target) {
+    int drop = 1;
+    double least = 1e18;
+    for (int i = 1; i + 1 < count; ++i) {
+      const double d = distance_to_segment(c[static_cast<std::size_t>(i)], c[static_cast<std::size_t>(i - 1)],
+                                           c[static_cast<std::size_t>(i + 1)]);
+      if (d < least) {
+        least = d;
+        drop = i;
+      }
+    }
+    for (int i = drop; i + 1 < count; ++i)
+      c[static_cast<std::size_t>(i)] = c[static_cast<std::size_t>(i + 1)];
+    --count;
+  }
+}
 }  // namespace
 
 void Trail::reset(Vec2 start) {
   count_ = 1;
+  home_count_ = 0;
   reached_ = 0;
   went_round_ = false;
   crumbs_[0] = start;
@@ -44,32 +69,9 @@ void Trail::record(Vec2 p) {
       return;
     }
   }
-  if (count_ == kCapacity) thin();
+  if (count_ == kCapacity) thin(crumbs_, count_);
   reached_ = count_;
   crumbs_[static_cast<std::size_t>(count_++)] = p;
-}
-
-// Halves the crumbs, dropping one at a time the crumb that lies nearest the straight line between
-// its neighbours (ties: the earlier one): the corners where the way turned round an obstacle stay,
-// so that no leg of the thinned trail cuts through it; the straight stretches thin out. The first
-// and last crumbs stay.
-void Trail::thin() {
-  while (count_ > kCapacity / 2) {
-    int drop = 1;
-    double least = 1e18;
-    for (int i = 1; i + 1 < count_; ++i) {
-      const double d =
-          distance_to_segment(crumbs_[static_cast<std::size_t>(i)], crumbs_[static_cast<std::size_t>(i - 1)],
-                              crumbs_[static_cast<std::size_t>(i + 1)]);
-      if (d < least) {
-        least = d;
-        drop = i;
-      }
-    }
-    for (int i = drop; i + 1 < count_; ++i)
-      crumbs_[static_cast<std::size_t>(i)] = crumbs_[static_cast<std::size_t>(i + 1)];
-    --count_;
-  }
 }
 
 void Trail::touch(Vec2 p) {
@@ -104,12 +106,23 @@ int Trail::nearest_crumb(Vec2 p, Vec2 nest, double within) const {
   return best;
 }
 
+void Trail::record_home(Vec2 p) {
+  if (count_ == 0) return;
+  const Vec2 last = home_count_ > 0 ? home_[static_cast<std::size_t>(home_count_ - 1)]
+                                    : crumbs_[static_cast<std::size_t>(count_ - 1)];
+  if (dist(p, last) < kSpacing) return;
+  if (home_count_ == kHomeCapacity) thin(home_, home_count_);
+  home_[static_cast<std::size_t>(home_count_++)] = p;
+}
+
 void Trail::start_home(Vec2 p) {
+  home_count_ = 0;
   count_ = nearest_crumb(p, p, kEverywhere) + 1;  // the crumbs after it stay in the array for fall_back
   home_from_ = count_;
 }
 
 void Trail::start_home_within(Vec2 p, Vec2 nest, double within) {
+  home_count_ = 0;
   const int best = nearest_crumb(p, nest, within);
   if (best < 0) {
     start_home(p);

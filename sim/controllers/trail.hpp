@@ -14,6 +14,7 @@ namespace swarmpath::sim {
 class Trail {
  public:
   static constexpr int kCapacity = 128;
+  static constexpr int kHomeCapacity = 64;      ///< crumbs of the leg home by the field [R way_home_leg]
   static constexpr double kEverywhere = 1e300;  ///< [m] a `within` that every crumb is
 
   /// Starts a new trail at `start`.
@@ -29,6 +30,17 @@ class Trail {
   /// On the way home before taking the trail: a crumb the robot passes within 25 cm of is one it
   /// has reached; the trail home may start there.
   void touch(Vec2 p);
+
+  /// [R way_home_leg] On the way home by the field, before taking the trail: a crumb every 25 cm
+  /// of the leg home, which goes on from the trail's last crumb (path integration does not stop at
+  /// the turn home); a full leg drops half its crumbs as the trail does. Taking the trail
+  /// (start_home, start_home_within) or a new trip (reset) clears it.
+  void record_home(Vec2 p);
+
+  int home_size() const { return home_count_; }
+
+  /// Crumb `i` of the leg home (0: the first after the trail's last crumb).
+  Vec2 home_crumb(int i) const { return home_[static_cast<std::size_t>(i)]; }
 
   /// Begins the way home from `p` at the crumb nearest it (the robot may be anywhere along the
   /// trail, or beside it).
@@ -75,13 +87,13 @@ class Trail {
   Vec2 crumb(int i) const { return crumbs_[static_cast<std::size_t>(i)]; }
 
  private:
-  void thin();
-
   // the index of the crumb nearest `p` among those within `within` of `nest` (-1: none)
   int nearest_crumb(Vec2 p, Vec2 nest, double within) const;
 
   std::array<Vec2, kCapacity> crumbs_{};
   int count_ = 0;
+  std::array<Vec2, kHomeCapacity> home_{};
+  int home_count_ = 0;
   int reached_ = 0;    // the crumb nearest home that the robot has been at since the last record
   int home_from_ = 0;  // count_ when start_home chose the first crumb
   bool went_round_ = false;

@@ -171,5 +171,48 @@ TEST(LeadWay, AllocatedRobotsWalkTheWayTheFounderFoundTheGoalBy) {
             evaluate(on, s, Mode::kPathFormation, 1).state_hash);
 }
 
+// way_home_leg [R] (docs/detours.md): a founder that found the goal on its way home (return_finds)
+// keeps a way out that ends where its trip turned home, 4 m from the goal; no crumb of it lies within
+// R_vis + 0.5 m of the goal, so no way is told, and the allocated robots head for the goal by the
+// field, into the wall under the goal's room. tests/data/rooms_1.toml (the training arena rooms-1:
+// the goal's room above the nest's, its door three rooms round), 100 robots, seed 23, task allocation,
+// the first 13 000 ticks: with the rule the way goes on along the founder's leg home to the goal.
+TEST(WayHomeLeg, AFounderThatFoundTheGoalOnItsWayHomeTellsAWayThatReachesIt) {
+  Params off;  // the default
+  ASSERT_FALSE(off.way_home_leg);
+  Params on = off;
+  on.way_home_leg = true;
+  const Scenario s = with_max_ticks(load_scenario(test::source_path("tests/data/rooms_1.toml")), 13000);
+
+  struct Seen {
+    std::int64_t on_told = 0;  ///< robot-ticks walking a way heard from the founder
+    int in_goal_room = 0;      ///< allocated robots in the goal's room at the last tick
+  };
+
+  const auto watch = [&s](const Params& p) {
+    Seen seen;
+    const auto observe = [&seen](const World& w) {
+      seen.in_goal_room = 0;
+      for (std::size_t i = 0; i < w.memory.size(); ++i) {
+        const RobotMemory& mem = w.memory[i];
+        if (mem.route.walking() && mem.pf.told.complete()) ++seen.on_told;
+        const Vec2 at = w.positions[i];
+        const bool goal_room = at.x < -4.1 && at.y > 0.1;  // west of x = -4, north of y = 0
+        if (mem.ta.state == TaState::kPathFormation && goal_room) ++seen.in_goal_room;
+      }
+      return false;
+    };
+    run(p, s, Mode::kTaskAllocation, 23, observe);
+    return seen;
+  };
+  const Seen without = watch(off);
+  const Seen with = watch(on);
+  EXPECT_EQ(without.on_told, 0);  // off: no way told, nobody walks one
+  EXPECT_EQ(without.in_goal_room, 0);
+  // on: 97 391 robot-ticks along the founder's way, 13 allocated robots in the goal's room
+  EXPECT_GT(with.on_told, 50000);
+  EXPECT_GE(with.in_goal_room, 10);
+}
+
 }  // namespace
 }  // namespace swarmpath::sim
