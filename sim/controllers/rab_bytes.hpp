@@ -2,12 +2,15 @@
 // Numbers in a range-and-bearing payload (SPEC §2.6's 10 bytes) for the messages beyond the
 // protocol's own [R]: the sightings and ways robots tell (share_sighting, share_way, lead_way).
 // Signed 16- and 32-bit integers, little-endian; a 16-bit value is rounded and clamped to +-32 767.
+// A position in 16 bits comes with its unit, 10^e cm (e 0-3): to the centimetre within 327 m of the
+// nest, to the decimetre or coarser beyond, as far as any arena reaches (kMaxArenaSide).
 #pragma once
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 
 #include "sim/percept.hpp"
 
@@ -23,6 +26,21 @@ inline void put_i16(RabPayload& b, std::size_t at, double v) {
 inline double get_i16(const RabPayload& b, std::size_t at) {
   const auto u = static_cast<std::uint16_t>(b[at] | (b[at + 1] << 8));
   return static_cast<double>(static_cast<std::int16_t>(u));
+}
+
+/// The unit of a 16-bit position: 10^e cm.
+inline double unit_cm(std::uint8_t e) {
+  constexpr double kUnits[4] = {1.0, 10.0, 100.0, 1000.0};
+  return kUnits[e & 3U];
+}
+
+/// The exponent of the finest unit (unit_cm) in which every one of `values_cm` fits +-32 767.
+inline std::uint8_t unit_exponent(std::initializer_list<double> values_cm) {
+  double largest = 0.0;
+  for (const double v : values_cm) largest = std::max(largest, std::abs(v));
+  std::uint8_t e = 0;
+  while (e < 3 && std::round(largest / unit_cm(e)) > 32767.0) ++e;
+  return e;
 }
 
 inline void put_i32(RabPayload& b, std::size_t at, std::int32_t v) {

@@ -99,8 +99,10 @@ bool tell_way(int id, Vec2 nest, const Params& p, const Route& route, PfMemory& 
   cmd.rab[1] = kWayMark;
   cmd.rab[2] = static_cast<std::uint8_t>(k);
   cmd.rab[3] = static_cast<std::uint8_t>(m.tell_count);
-  put_i16(cmd.rab, 4, rel.x);
-  put_i16(cmd.rab, 6, rel.y);
+  const std::uint8_t e = unit_exponent({rel.x, rel.y});
+  put_i16(cmd.rab, 4, rel.x / unit_cm(e));
+  put_i16(cmd.rab, 6, rel.y / unit_cm(e));
+  cmd.rab[8] = e;
   return true;
 }
 
@@ -120,7 +122,9 @@ bool hear_way(std::span<const RabMessage> inbox, Vec2 nest, PfMemory& m) {
       m.told.count = count;
       m.told.heard = 0;
     }
-    m.told.corners[static_cast<std::size_t>(k)] = nest + kCm * Vec2{get_i16(r.data, 4), get_i16(r.data, 6)};
+    const double unit = unit_cm(r.data[8]);
+    m.told.corners[static_cast<std::size_t>(k)] =
+        nest + kCm * Vec2{unit * get_i16(r.data, 4), unit * get_i16(r.data, 6)};
     m.told.heard |= std::uint32_t{1} << k;
     any = true;
   }

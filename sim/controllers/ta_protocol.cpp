@@ -209,12 +209,17 @@ RabPayload way_message(std::uint8_t id, const WayCorner& c) {
   p[2] = static_cast<std::uint8_t>(c.index);
   p[4] = static_cast<std::uint8_t>(MsgType::kWay);
   p[5] = static_cast<std::uint8_t>(c.count);
-  put_i16(p, 6, c.x_cm);
-  put_i16(p, 8, c.y_cm);
+  const std::uint8_t e = unit_exponent({c.x_cm, c.y_cm});  // in the goal's unit bits: flags stay 0
+  p[3] = static_cast<std::uint8_t>(e << kGoalUnitShift);
+  put_i16(p, 6, c.x_cm / unit_cm(e));
+  put_i16(p, 8, c.y_cm / unit_cm(e));
   return p;
 }
 
-WayCorner way_corner(const RabPayload& p) { return {p[2], p[5], get_i16(p, 6), get_i16(p, 8)}; }
+WayCorner way_corner(const RabPayload& p) {
+  const double unit = unit_cm(static_cast<std::uint8_t>((p[3] & kGoalUnitMask) >> kGoalUnitShift));
+  return {p[2], p[5], unit * get_i16(p, 6), unit * get_i16(p, 8)};
+}
 
 RabKinds message_kinds(const TaMessage& m) {
   RabKinds k = 0;

@@ -212,8 +212,9 @@ struct WayCorner {
   double y_cm = 0;
 };
 
-/// lead_way [R]: the payload of a corner: 0 id, 1 state 0 (no claim), 2 the index, 3 flags 0, 4 kWay,
-/// 5 the count, 6-7 and 8-9 x and y in cm (rab_bytes.hpp: signed 16-bit, +-327 m).
+/// lead_way [R]: the payload of a corner: 0 id, 1 state 0 (no claim), 2 the index, 3 flags 0 with the
+/// unit in the goal's unit bits, 4 kWay, 5 the count, 6-7 and 8-9 x and y (rab_bytes.hpp: signed
+/// 16-bit in 10^e cm, the centimetre within 327 m of the nest).
 RabPayload way_message(std::uint8_t id, const WayCorner& c);
 
 /// The corner a kWay payload carries (way_message's inverse).

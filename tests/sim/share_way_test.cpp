@@ -128,6 +128,18 @@ TEST(ShareWay, ATellerTellsItsWayCornerByCornerAndTheListenerHearsItWhole) {
                    teller.tell_corners[static_cast<std::size_t>(i)]),
               0.01);
   EXPECT_FALSE(listens_for_way(p, listener));  // heard whole
+  // a corner 500 m from the nest (an arena of that size) travels to the decimetre, not clamped
+  PfMemory far_teller = teller;
+  far_teller.tell_corners[0] = nest + Vec2{500.0, -0.3};
+  far_teller.tell_for = far_teller.sighting;  // the corners as worked out, with the far one
+  Command far_cmd;
+  ASSERT_TRUE(tell_way(7, nest, p, route, far_teller, 2 * teller.tell_count + 1, far_cmd));  // corner 0
+  PfMemory far_listener = listener;
+  far_listener.told = ToldWay{};
+  far_listener.told.teller = 7;
+  inbox[0].data = far_cmd.rab;
+  ASSERT_TRUE(hear_way(inbox, nest, far_listener));
+  EXPECT_LT(dist(far_listener.told.corners[0], far_teller.tell_corners[0]), 0.1);
   // without share_way the sighting alone is told, as before
   p.share_way = false;
   PfMemory plain = teller;

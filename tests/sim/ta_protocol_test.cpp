@@ -106,8 +106,17 @@ TEST(TaFraming, AWayCornerTravelsToTheCentimetreAndIsNoOtherMessage) {
     EXPECT_EQ(back.x_cm, c.x_cm);
     EXPECT_EQ(back.y_cm, c.y_cm);
   }
-  EXPECT_EQ(way_corner(way_message(1, {0, 1, 40000.0, -40000.0})).x_cm, 32767.0);  // +-327 m: clamped
-  EXPECT_EQ(message_kinds(decode(encode(TaMessage{}))) & kKindWay, 0U);            // nor is any other
+  // beyond 327 m of the nest the corner travels in a coarser unit, never clamped: 400 m, and the far
+  // corner of the largest arena (kMaxArenaSide, 2 km a side: 2.8 km from the nest), to the decimetre
+  const WayCorner far = way_corner(way_message(1, {0, 1, 40000.0, -40003.0}));
+  EXPECT_EQ(far.x_cm, 40000.0);
+  EXPECT_EQ(far.y_cm, -40000.0);
+  EXPECT_EQ(claimed_emitter(decode(way_message(1, {0, 1, 40000.0, -40003.0}))), kNobody);
+  EXPECT_EQ(decode(way_message(1, {0, 1, 40000.0, -40003.0})).flags, 0);
+  const WayCorner farthest = way_corner(way_message(1, {0, 1, -282842.7, 199999.6}));
+  EXPECT_NEAR(farthest.x_cm, -282842.7, 50.0);
+  EXPECT_NEAR(farthest.y_cm, 199999.6, 50.0);
+  EXPECT_EQ(message_kinds(decode(encode(TaMessage{}))) & kKindWay, 0U);  // nor is any other
 }
 
 TEST(TaEquations, WorkedExampleOfSpec27) {
