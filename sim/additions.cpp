@@ -63,6 +63,7 @@ const std::array kAdditions{
   Addition{"nest_crowd", "no edge following or falling back among the robots at the nest", "§2.1 fields", kBoth, {{{"nest_crowd", 0}}}, {"T_trap"}},
   Addition{"way_home_leg", "a kept way goes on along the leg walked home by the field", "§2.6 T5, T9", kTa, {{{"way_home_leg", 0}}}, {"lead_way"}},
   Addition{"founder_retrace", "a founder that cannot reach the nest straight goes back along its way", "§2.6 T4", kTa, {{{"founder_retrace", 0}}}, {}},
+  Addition{"dm_rescout", "a decision maker that no founder came to scouts again", "§2.6 T6", kTa, {{{"dm_rescout", 0}}}, {}},
   Addition{"founder_in_crowd", "a founder held off the nest by its crowd asks from where it stands", "§2.6 T4", kTa, {{{"founder_in_crowd", 0}}}, {"nest_crowd"}},
   Addition{"give_way", "resting robots give way to a robot pressing on them", "§2.6 T6", kTa, {{{"give_way", 0}}}, {}},
   Addition{"single_child", "allocated explorers attach only to an unclaimed subgoal", "§2.3 #1", kTa, {{{"single_child", 0}}}, {}},
@@ -76,9 +77,9 @@ const std::array kAdditions{
 
 // additions under trial: registered so that the ablation can measure them, off in the default
 // (docs/detours.md)
-constexpr std::array<std::string_view, 9> kOffInDefault{
+constexpr std::array<std::string_view, 10> kOffInDefault{
     "spot_on_way", "way_after_edge", "leaf_in_fan",      "route_to_sighting", "walk_way",
-    "share_way",   "founder_retrace", "founder_in_crowd", "way_home_leg"};
+    "share_way",   "founder_retrace", "founder_in_crowd", "way_home_leg", "dm_rescout"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
 constexpr std::array kSpecDefaults{

@@ -75,7 +75,15 @@ bool allocation_over(const TaContext& c) {  // T7, TA d: late arrivals
 }
 
 bool learned_of_the_goal(const TaContext& c) {  // T3, TA f
-  return c.sight.founder_or_dm_seen || c.sight.request_heard;
+  // R dm_rescout: a robot whose wait led to no founder is called by a founder's light or REQUEST only
+  const bool lights = c.m.rescouted ? c.sight.founder_seen : c.sight.founder_or_dm_seen;
+  return lights || c.sight.request_heard;
+}
+
+// T6s [R dm_rescout]: a decision maker that has waited T_dm_wait at the nest and never heard a
+// REQUEST saw no founder come: the founder may have failed on its way. It scouts again.
+bool no_founder_came(const TaContext& c) {
+  return c.p.dm_rescout && !c.m.request_ever && static_cast<double>(c.m.waited) >= c.p.t_dm_wait;
 }
 
 bool senior_founder(const TaContext& c) {  // T8 [R]: duplicate founders
@@ -173,6 +181,15 @@ void dm_initiates(const TaContext& c, RobotMemory& mem) {
   }
 }
 
+// T6s [R dm_rescout]: a scout again, its next trip from the nest (as at the start of the run)
+void rescout(const TaContext& c, RobotMemory& mem) {
+  pf_init(mem.pf, c.p, PfRole::kScout);
+  mem.pf.trip_start = c.in.tick;
+  mem.trail.reset(c.in.pose.p);
+  mem.ta.waited = 0;
+  mem.ta.rescouted = true;
+}
+
 // T10 [R rest_recruit]: path formation, forming the next link from the chain's end in view
 void join_chain_end(const TaContext& c, RobotMemory& mem) {
   start_path_formation(c, mem, seconds(mem.pf.t_explore));
@@ -210,13 +227,14 @@ void refound(const TaContext& c, RobotMemory& mem) {
 // clang-format off
 // SPEC §2.6, in its order; T1 (explore / return / rest) runs inside the scout's path-formation
 // states, T4 (the founder at the nest runs the protocol) inside the founder's behaviour. Rows with a
-// letter or a number past 9 are [R] (docs/CHOICES.md): T7f late_founder_rests, T10 rest_recruit and
-// recruit_call, T11-T12 refound_starved.
-constexpr std::array<TaTransition, 12> kTable{{
+// letter or a number past 9 are [R] (docs/CHOICES.md): T6s dm_rescout (docs/faults.md), T7f
+// late_founder_rests, T10 rest_recruit and recruit_call, T11-T12 refound_starved.
+constexpr std::array<TaTransition, 13> kTable{{
   {TaState::kScout,         found_the_goal,               TaState::kGoalFounder,   become_founder,    "T2",  "c"},
   {TaState::kScout,         allocation_over,              TaState::kRestingTask,   nullptr,           "T7",  "d"},
   {TaState::kScout,         learned_of_the_goal,          TaState::kDecisionMaker, nullptr,           "T3",  "f"},
   {TaState::kDecisionMaker, acked,                        TaState::kPathFormation, dm_initiates,      "T5",  "e"},
+  {TaState::kDecisionMaker, no_founder_came,              TaState::kScout,         rescout,           "T6s", ""},
   {TaState::kDecisionMaker, told_to_rest,                 TaState::kRestingTask,   nullptr,           "T6",  "d"},
   {TaState::kGoalFounder,   senior_founder,               TaState::kDecisionMaker, nullptr,           "T8",  ""},
   {TaState::kGoalFounder,   late_founder,                 TaState::kRestingTask,   nullptr,           "T7f", "d"},
@@ -307,6 +325,7 @@ void ta_perceive(const Percept& in, const Params& p, const RobotMemory& mem, TaS
   for (const Blob& b : in.blobs) {
     if (b.emitter == kGoalEmitter && b.distance_cm <= p.d_detect) sight.goal_found = true;
     if (b.emitter >= 0 && (b.color == Led::kCyan || b.color == Led::kGray80)) sight.founder_or_dm_seen = true;
+    if (b.emitter >= 0 && b.color == Led::kCyan) sight.founder_seen = true;
     if (b.emitter >= 0 && is_path_colour(b.color)) sight.path_colour_seen = true;  // T7 (not the nest beacon)
   }
   const auto id = static_cast<std::uint8_t>(in.id);
@@ -407,6 +426,7 @@ Command task_allocation_step(const Percept& in, const Params& p, RobotMemory& me
       // gather at the nest; answer a requesting founder with JOIN
       cmd = drive_to(in, p, mem, mem.nest, p.nest_wait * p.r_nest_reach, Led::kGray80);
       m.waited = (at_nest && !sight.request_heard) ? m.waited + 1 : 0;
+      m.request_ever = m.request_ever || sight.request_heard;
       if (sight.dm.send.type == MsgType::kJoin) cmd = say(cmd, sight.dm.send);
       break;
     case TaState::kRestingTask:

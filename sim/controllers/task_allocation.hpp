@@ -47,6 +47,8 @@ struct TaMemory {
   std::int64_t held = 0;              ///< ... ticks since that improved by trap_progress
   // decision maker
   std::int64_t waited = 0;       ///< ticks at the nest without hearing a REQUEST
+  bool request_ever = false;     ///< dm_rescout [R]: it has heard a REQUEST as a decision maker
+  bool rescouted = false;        ///< dm_rescout: a scout again; GRAY80 lights alone no longer call it
   std::int64_t depart_tick = 0;  ///< allocated: the tick it leaves the nest (depart_gap) [R]
   // resting task
   bool arrived = false;
@@ -68,6 +70,7 @@ struct TaSight {
   bool goal_found = false;          ///< goal beacon within d_detect
   bool exploring = true;            ///< a scout on its way out (not going home or resting)
   bool founder_or_dm_seen = false;  ///< a CYAN or GRAY80 robot within R_vis
+  bool founder_seen = false;        ///< ... a CYAN one (a founder)
   bool path_colour_seen = false;    ///< a robot in a path-formation state (SPEC T7)
   bool request_heard = false;
   bool alloc_done_heard = false;

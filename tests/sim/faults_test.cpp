@@ -445,6 +445,24 @@ TEST(Faults, RunsWithFaultsAreDeterministicAtAnyThreadCount) {
   for (int i = 0; i < kRuns; ++i) EXPECT_EQ(parallel[i], sequential[i]) << "run " << i;
 }
 
+// dm_rescout [R] (docs/faults.md): env7 at 100 robots, seed 1, task allocation, 10 % of the robots
+// failing in the first 5 000 ticks: the goal's founder fails on its way to the nest. Without the rule
+// the decision makers rest after T_dm_wait and nobody allocates for the rest of the run; with it they
+// scout again, the goal is found anew and the path forms (at tick 19 740).
+TEST(Faults, DecisionMakersThatNoFounderCameToScoutAgain) {
+  Params off;
+  ASSERT_FALSE(off.dm_rescout);  // under trial, off
+  Params on = off;
+  on.dm_rescout = true;
+  const Scenario s =
+      with_faults(with_robots(load_scenario(test::paper_env(7)), 100), FaultModel{.fail_fraction = 0.1});
+  const Metrics without = evaluate(off, s, Mode::kTaskAllocation, 1);
+  const Metrics with = evaluate(on, s, Mode::kTaskAllocation, 1);
+  EXPECT_EQ(without.chain.subgoals_laid, 0);
+  EXPECT_FALSE(without.success);
+  EXPECT_TRUE(with.success);
+}
+
 TEST(Faults, PacketLossOfAllMessagesBlocksTheAllocationCleanly) {
   // nobody hears the founder: no robot is allocated through the protocol, the founders give up
   // waiting (T_founder_wait) and the run ends at T_max

@@ -210,6 +210,40 @@ TEST(TaTable, T6ADecisionMakerThatWaitedTooLongRests) {
   EXPECT_EQ(fire(mem, Reading{}), "T6");
 }
 
+// dm_rescout [R]: a decision maker that waited T_dm_wait and never heard a REQUEST (no founder came)
+// scouts again; one that heard a REQUEST during its wait rests as T6 says; off, it rests.
+TEST(TaTable, T6sADecisionMakerThatNoFounderCameToScoutsAgain) {
+  Params p;
+  ASSERT_FALSE(p.dm_rescout);  // under trial, off
+  RobotMemory off = robot(TaState::kDecisionMaker);
+  off.ta.waited = static_cast<std::int64_t>(p.t_dm_wait);
+  EXPECT_EQ(fire(off, Reading{}, p), "T6");
+  p.dm_rescout = true;
+  RobotMemory asked = robot(TaState::kDecisionMaker);
+  asked.ta.waited = static_cast<std::int64_t>(p.t_dm_wait);
+  asked.ta.request_ever = true;  // a founder asked, then went quiet: the allocation ran
+  EXPECT_EQ(fire(asked, Reading{}, p), "T6");
+  RobotMemory mem = robot(TaState::kDecisionMaker);
+  mem.ta.waited = static_cast<std::int64_t>(p.t_dm_wait) - 1;
+  EXPECT_EQ(fire(mem, Reading{}, p), "");  // still waiting
+  mem.ta.waited = static_cast<std::int64_t>(p.t_dm_wait);
+  EXPECT_EQ(fire(mem, Reading{}, p), "T6s");
+  EXPECT_EQ(mem.ta.state, TaState::kScout);
+  EXPECT_TRUE(mem.ta.rescouted);
+  EXPECT_EQ(mem.ta.waited, 0);
+  EXPECT_EQ(mem.pf.role, PfRole::kScout);
+  // the GRAY80 lights of those still waiting led to no founder: they no longer call it (T3) ...
+  Reading grey;
+  grey.see(Led::kGray80, 30, 80);
+  EXPECT_EQ(fire(mem, grey, p), "");
+  EXPECT_EQ(mem.ta.state, TaState::kScout);
+  // ... a founder's light does
+  Reading cyan;
+  cyan.see(Led::kCyan, 31, 80);
+  EXPECT_EQ(fire(mem, cyan, p), "T3");
+  EXPECT_EQ(mem.ta.state, TaState::kDecisionMaker);
+}
+
 TEST(TaTable, T7AScoutThatSeesAPathRobotRests) {  // late arrival
   RobotMemory mem = robot(TaState::kScout);
   Reading r;
@@ -306,7 +340,7 @@ TEST(TaTable, T10ARestingRobotJoinsAChainEndInViewForItsWait) {
   ASSERT_GT(ticks, 0) << "never joined";
   EXPECT_GE(ticks, static_cast<int>(p.t_recruit));  // T_recruit, plus its draw of up to as long again
   EXPECT_LE(ticks, 2 * static_cast<int>(p.t_recruit) + 1);
-  EXPECT_EQ(mem.ta.last_row, 10);
+  EXPECT_EQ(mem.ta.last_row, ta_row_number("T10"));
   EXPECT_EQ(mem.pf.target.id, 20);
   // nearer the nest than the chain's end and d_sub from it: it stands as the next link at once
   // (row #5), without first crossing the resting crowd to the end
@@ -364,7 +398,7 @@ TEST(TaTable, T10ARestingRobotAnswersACallFromAChainEndOutOfView) {
   const int ticks = ticks_to_join(mem, call_heard(), p, 3 * static_cast<int>(p.t_recruit));
   ASSERT_GT(ticks, 0) << "never answered";
   EXPECT_GE(ticks, static_cast<int>(p.t_recruit));  // T_recruit plus its draw, as for a chain end in view
-  EXPECT_EQ(mem.ta.last_row, 10);
+  EXPECT_EQ(mem.ta.last_row, ta_row_number("T10"));
   // it goes where the medium says the caller is, 2.5 m east, exploring (row 1 takes it from there)
   EXPECT_EQ(mem.pf.state, PfState::kExploring);
   EXPECT_EQ(mem.pf.explore_leg, ExploreLeg::kToSighting);
