@@ -43,6 +43,21 @@ inline std::uint8_t unit_exponent(std::initializer_list<double> values_cm) {
   return e;
 }
 
+/// A position relative to the nest [cm] in the two 16-bit numbers at `at` and `at + 2`, in the finest
+/// unit that holds both; returns the unit's exponent, which the caller stores where its message keeps it.
+inline std::uint8_t put_position_cm(RabPayload& b, std::size_t at, double x_cm, double y_cm) {
+  const std::uint8_t e = unit_exponent({x_cm, y_cm});
+  put_i16(b, at, x_cm / unit_cm(e));
+  put_i16(b, at + 2, y_cm / unit_cm(e));
+  return e;
+}
+
+/// put_position_cm's inverse, given the unit's exponent `e`: x and y [cm].
+inline void get_position_cm(const RabPayload& b, std::size_t at, std::uint8_t e, double& x_cm, double& y_cm) {
+  x_cm = unit_cm(e) * get_i16(b, at);
+  y_cm = unit_cm(e) * get_i16(b, at + 2);
+}
+
 inline void put_i32(RabPayload& b, std::size_t at, std::int32_t v) {
   const auto u = static_cast<std::uint32_t>(v);
   for (std::size_t k = 0; k < 4; ++k) b[at + k] = static_cast<std::uint8_t>(u >> (8 * k));

@@ -99,10 +99,7 @@ bool tell_way(int id, Vec2 nest, const Params& p, const Route& route, PfMemory& 
   cmd.rab[1] = kWayMark;
   cmd.rab[2] = static_cast<std::uint8_t>(k);
   cmd.rab[3] = static_cast<std::uint8_t>(m.tell_count);
-  const std::uint8_t e = unit_exponent({rel.x, rel.y});
-  put_i16(cmd.rab, 4, rel.x / unit_cm(e));
-  put_i16(cmd.rab, 6, rel.y / unit_cm(e));
-  cmd.rab[8] = e;
+  cmd.rab[8] = put_position_cm(cmd.rab, 4, rel.x, rel.y);
   return true;
 }
 
@@ -122,9 +119,9 @@ bool hear_way(std::span<const RabMessage> inbox, Vec2 nest, PfMemory& m) {
       m.told.count = count;
       m.told.heard = 0;
     }
-    const double unit = unit_cm(r.data[8]);
-    m.told.corners[static_cast<std::size_t>(k)] =
-        nest + kCm * Vec2{unit * get_i16(r.data, 4), unit * get_i16(r.data, 6)};
+    Vec2 rel;
+    get_position_cm(r.data, 4, r.data[8], rel.x, rel.y);
+    m.told.corners[static_cast<std::size_t>(k)] = nest + kCm * rel;
     m.told.heard |= std::uint32_t{1} << k;
     any = true;
   }

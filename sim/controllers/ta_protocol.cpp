@@ -209,16 +209,15 @@ RabPayload way_message(std::uint8_t id, const WayCorner& c) {
   p[2] = static_cast<std::uint8_t>(c.index);
   p[4] = static_cast<std::uint8_t>(MsgType::kWay);
   p[5] = static_cast<std::uint8_t>(c.count);
-  const std::uint8_t e = unit_exponent({c.x_cm, c.y_cm});  // in the goal's unit bits: flags stay 0
-  p[3] = static_cast<std::uint8_t>(e << kGoalUnitShift);
-  put_i16(p, 6, c.x_cm / unit_cm(e));
-  put_i16(p, 8, c.y_cm / unit_cm(e));
+  const std::uint8_t e = put_position_cm(p, 6, c.x_cm, c.y_cm);
+  p[3] = static_cast<std::uint8_t>(e << kGoalUnitShift);  // in the goal's unit bits: flags stay 0
   return p;
 }
 
 WayCorner way_corner(const RabPayload& p) {
-  const double unit = unit_cm(static_cast<std::uint8_t>((p[3] & kGoalUnitMask) >> kGoalUnitShift));
-  return {p[2], p[5], unit * get_i16(p, 6), unit * get_i16(p, 8)};
+  WayCorner c{p[2], p[5], 0.0, 0.0};
+  get_position_cm(p, 6, static_cast<std::uint8_t>((p[3] & kGoalUnitMask) >> kGoalUnitShift), c.x_cm, c.y_cm);
+  return c;
 }
 
 RabKinds message_kinds(const TaMessage& m) {
