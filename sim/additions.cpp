@@ -77,9 +77,9 @@ const std::array kAdditions{
 
 // additions under trial: registered so that the ablation can measure them, off in the default
 // (docs/detours.md)
-constexpr std::array<std::string_view, 10> kOffInDefault{
+constexpr std::array<std::string_view, 9> kOffInDefault{
     "spot_on_way", "way_after_edge", "leaf_in_fan",      "route_to_sighting", "walk_way",
-    "share_way",   "founder_retrace", "founder_in_crowd", "way_home_leg", "dm_rescout"};
+    "share_way",   "founder_retrace", "founder_in_crowd", "way_home_leg"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
 constexpr std::array kSpecDefaults{

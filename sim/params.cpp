@@ -249,7 +249,7 @@ const std::array kTable{
   ParamInfo{ 0, "founder_retrace", B, &P::founder_retrace, 0, 0, 1, 1, "", "",
             "task allocation (T4): a goal founder on its way to the nest that the field traps, and whose trail home would begin at the trail's first crumb (the nest itself, nearest in a straight line though behind a wall, what the field already steers at), goes back instead to the crumb nearest home it has been at on this way (where it left its way out; the crumb where it turned home when it touched none) and home along its trail from there, also within nest_crowd, so that a founder beside a nest it cannot reach straight finds the way in (off: the crumb behind the wall is passed over and the founder follows edges)",
             "§2.6 T4", {}},
-  ParamInfo{ 0, "dm_rescout", B, &P::dm_rescout, 0, 0, 1, 1, "", "",
+  ParamInfo{ 0, "dm_rescout", B, &P::dm_rescout, 1, 0, 1, 1, "", "",
             "task allocation (T6): a decision maker that has waited T_dm_wait at the nest without ever hearing a REQUEST (no founder came: the founder may have failed on its way, fail_fraction) scouts again instead of resting, from the nest, as at the start of the run, and from then on only a founder's CYAN light or a REQUEST makes it a decision maker again (the GRAY80 lights of those still waiting led to no founder), so that the goal is found anew and a new founder allocates (off: it rests, SPEC T6, and a swarm whose only founder failed rests for the rest of the run)",
             "§2.6 T6", {}},
   ParamInfo{ 0, "founder_in_crowd", B, &P::founder_in_crowd, 0, 0, 1, 1, "", "",

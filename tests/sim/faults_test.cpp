@@ -450,10 +450,10 @@ TEST(Faults, RunsWithFaultsAreDeterministicAtAnyThreadCount) {
 // the decision makers rest after T_dm_wait and nobody allocates for the rest of the run; with it they
 // scout again, the goal is found anew and the path forms (at tick 19 740).
 TEST(Faults, DecisionMakersThatNoFounderCameToScoutAgain) {
-  Params off;
-  ASSERT_FALSE(off.dm_rescout);  // under trial, off
-  Params on = off;
-  on.dm_rescout = true;
+  Params on;
+  ASSERT_TRUE(on.dm_rescout);  // in the default
+  Params off = on;
+  off.dm_rescout = false;
   const Scenario s =
       with_faults(with_robots(load_scenario(test::paper_env(7)), 100), FaultModel{.fail_fraction = 0.1});
   const Metrics without = evaluate(off, s, Mode::kTaskAllocation, 1);

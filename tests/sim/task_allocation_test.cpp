@@ -205,16 +205,20 @@ TEST(TaTable, T6DoneSendsADecisionMakerToRest) {  // TA d
 }
 
 TEST(TaTable, T6ADecisionMakerThatWaitedTooLongRests) {
+  Params p;
+  p.dm_rescout = false;  // SPEC T6 as written (T6s below)
   RobotMemory mem = robot(TaState::kDecisionMaker);
-  mem.ta.waited = static_cast<std::int64_t>(Params{}.t_dm_wait);
-  EXPECT_EQ(fire(mem, Reading{}), "T6");
+  mem.ta.waited = static_cast<std::int64_t>(p.t_dm_wait);
+  EXPECT_EQ(fire(mem, Reading{}, p), "T6");
 }
 
-// dm_rescout [R]: a decision maker that waited T_dm_wait and never heard a REQUEST (no founder came)
-// scouts again; one that heard a REQUEST during its wait rests as T6 says; off, it rests.
+// dm_rescout [R] (in the default): a decision maker that waited T_dm_wait and never heard a REQUEST
+// (no founder came) scouts again; one that heard a REQUEST during its wait rests as T6 says; off, it
+// rests.
 TEST(TaTable, T6sADecisionMakerThatNoFounderCameToScoutsAgain) {
   Params p;
-  ASSERT_FALSE(p.dm_rescout);  // under trial, off
+  ASSERT_TRUE(p.dm_rescout);  // in the default
+  p.dm_rescout = false;
   RobotMemory off = robot(TaState::kDecisionMaker);
   off.ta.waited = static_cast<std::int64_t>(p.t_dm_wait);
   EXPECT_EQ(fire(off, Reading{}, p), "T6");
