@@ -87,7 +87,7 @@ const std::array kTable{
   ParamInfo{ 0, "trap_progress", R, &P::trap_progress, 30, 1, 200, 1, "", "cm",
             "what counts as progress for T_trap: a robot that has not got this much nearer its point (exploring: farther from the nest) for T_trap ticks is trapped",
             "§2.1 fields", {}},
-  ParamInfo{ 0, "dead_end_traps", R, &P::dead_end_traps, 5, 1, 50, 1, "", "",
+  ParamInfo{ 0, "dead_end_traps", R, &P::dead_end_traps, 20, 1, 50, 1, "", "",
             "an edge following that has made no progress for this many T_trap ticks is taken for a dead end and turns back along the same edge (once)",
             "§2.1 fields", {}},
   ParamInfo{ 0, "T_follow", R, &P::t_follow, 2000, 50, 5000, 50, "", "ticks",

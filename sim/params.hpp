@@ -81,7 +81,7 @@ struct Params {
   double w_seek = 1.0;              ///< pull of an explorer toward the goal or RED light it sees (0: none)
   double t_trap = 100;              ///< ticks without progress before edge following and the trail (0: never)
   double trap_progress = 30;        ///< gain that counts as progress for T_trap [cm]
-  double dead_end_traps = 5;        ///< a following without progress for this many T_trap turns back
+  double dead_end_traps = 20;       ///< a following without progress for this many T_trap turns back
   double t_follow = 2000;           ///< longest edge following [ticks]
   bool site_fidelity = true;        ///< start an exploration trip toward the last goal/subgoal sighting
   double travel_cap = 3;            ///< row #2: travel ends the trip after this many budgets (0: never)

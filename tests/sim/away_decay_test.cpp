@@ -66,6 +66,7 @@ TEST(AwayDecay, EachTripHomeWithoutASightingWeakensTheAwayFieldByItsFactor) {
 // case, docs/detours.md). The chain of runs differs from the scouts' first fruitless trips on.
 TEST(AwayDecay, AWallWithAFarDoorwayFormsWhenSearchersLeanLessOnTheAwayField) {
   Params on;                 // the default
+  on.dead_end_traps = 5;     // as measured: an edge following turned back after 5 T_trap without progress
   on.resume_search = false;  // as measured: every trip explores from the nest (with it both form)
   Params off = on;
   off.away_decay = 1.0;

@@ -72,11 +72,22 @@ int ticks_until_turning_back(const Params& p, double lose_cm) {
 }
 
 TEST(Navigator, AFollowingWithoutProgressTurnsBackAfterDeadEndTrapsTTrap) {
-  Params p;                                          // T_trap 100, dead_end_traps 5
+  Params p;  // T_trap 100, T_follow 2 000
+  p.dead_end_traps = 5;
   const int start = static_cast<int>(p.t_trap) + 1;  // the following begins
   EXPECT_EQ(ticks_until_turning_back(p, 0.1), start + static_cast<int>(5 * p.t_trap));
   p.dead_end_traps = 10;
   EXPECT_EQ(ticks_until_turning_back(p, 0.1), start + static_cast<int>(10 * p.t_trap));
+}
+
+// The default, dead_end_traps 20 (docs/detours.md, "Patience along walls"): 20 T_trap is T_follow,
+// so a following that loses ground turns back only when T_follow runs out, and a robot walks the
+// whole of a long wall to its end, though the wall's end lies where the robot loses ground
+TEST(Navigator, InTheDefaultAFollowingThatLosesGroundTurnsBackOnlyWhenTFollowRunsOut) {
+  const Params p;
+  ASSERT_EQ(p.dead_end_traps * p.t_trap, p.t_follow);
+  const int start = static_cast<int>(p.t_trap) + 1;
+  EXPECT_EQ(ticks_until_turning_back(p, 0.1), start + static_cast<int>(p.t_follow));
 }
 
 // A robot going home along its breadcrumbs, 25 cm from the next crumb, with a robot standing on that

@@ -74,7 +74,8 @@ TEST(ResumeSearch, ATripAfterAFruitlessOneTravelsToWhereThatOneTurnedHome) {
 // first 12 000 ticks: every trip explored from the nest reaches no robot within R_vis of the goal;
 // trips that resume where the last one turned home do (docs/detours.md: 26 611 against 9 587 ticks)
 TEST(ResumeSearch, TheGoalBehindTwoRoomsIsReachedWhenTripsResume) {
-  const Params on;
+  Params on;
+  on.dead_end_traps = 5;  // as measured: an edge following turned back after 5 T_trap without progress
   Params off = on;
   off.resume_search = false;
   const Scenario s = with_max_ticks(load_scenario(test::source_path("tests/data/rooms_1.toml")), 12000);
