@@ -233,7 +233,7 @@ Command path_formation_step(const Percept& in, const Params& p, RobotMemory& mem
   sight.may_form = !p.form_one_at_a_time || m.state != PfState::kExploring || sight.lure == nullptr ||
                    mem.rng.bernoulli(p.p_form);
   // transitions happen only here, via the table
-  const PfContext c{in, p, m, sight, mem.nest, mem.nav.on_trail};
+  const PfContext c{in, p, m, sight, mem.nest, mem.nav.on_trail, mem.trail.went_round()};
   if (const PfTransition* fired = pf_transition(c, m)) enter(in, p, mem, fired->to);
   ++m.t_state;
   mem.state = static_cast<std::uint8_t>(m.state);

@@ -41,8 +41,9 @@ struct PfContext {
   const Params& p;
   const PfMemory& m;
   const PfSight& sight;
-  Vec2 nest;              ///< the nest's global position [m]
-  bool on_trail = false;  ///< heading home along its own breadcrumbs
+  Vec2 nest;                ///< the nest's global position [m]
+  bool on_trail = false;    ///< heading home along its own breadcrumbs
+  bool went_round = false;  ///< its way on this trip followed an obstacle's edge
 };
 
 /// Reads the camera and the medium into `sight` and updates the robot's beliefs in `m`: the tracked

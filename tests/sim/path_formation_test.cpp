@@ -52,12 +52,13 @@ Tracked tracked(int id, Vec2 at) {
 }
 
 // perceive, then apply the table; returns the row that fired ("" for none)
-std::string fire(PfMemory& m, const Reading& r, const Params& p = {}, bool on_trail = false) {
+std::string fire(PfMemory& m, const Reading& r, const Params& p = {}, bool on_trail = false,
+                 bool went_round = false) {
   const Percept in = r.percept();
   PfSight sight;
   pf_perceive(in, p, kNest, m, sight);
   if (m.state == PfState::kSubgoalForming) next_form_leg(in, p, m);
-  const PfContext c{in, p, m, sight, kNest, on_trail};
+  const PfContext c{in, p, m, sight, kNest, on_trail, went_round};
   const PfTransition* row = pf_transition(c, m);
   return row ? std::string(row->row) : std::string();
 }
@@ -275,6 +276,26 @@ TEST(PfTable, Row5OnTheTrailStopsAtMostTrailSlackFartherFromTheNest) {
   anywhere.trail_slack = 3000;  // no bound: anywhere on its way
   m = forming(behind);
   EXPECT_EQ(fire(m, sees(180), anywhere, true), "#5");
+}
+
+// R: anywhere_after_edge (off by default; docs/detours.md). Retracing a way that followed an
+// obstacle's edge on this trip, a robot may stop as a subgoal however far from the nest; a way that
+// never followed one keeps trail_slack, and off its trail the target must be farther as before.
+TEST(PfTable, Row5AfterAnEdgeStopsAnywhereOnTheWayItCame) {
+  const Vec2 behind{-0.75, 0.0};  // the target 75 cm nearer the nest than the robot
+  Reading r;
+  r.add(Led::kRed, 7, 180, 75);
+  Params on;
+  on.anywhere_after_edge = true;
+  PfMemory m = forming(behind);
+  EXPECT_EQ(fire(m, r, Params{}, true, true), "");  // off: 75 cm > trail_slack
+  m = forming(behind);
+  EXPECT_EQ(fire(m, r, on, true, false), "");  // a way that never followed an edge
+  m = forming(behind);
+  EXPECT_EQ(fire(m, r, on, false, true), "");  // not on its way
+  m = forming(behind);
+  EXPECT_EQ(fire(m, r, on, true, true), "#5");
+  EXPECT_EQ(m.parent.id, 7);
 }
 
 // R: link_outward (off by default; docs/detours.md). Retracing its own way home, a robot may stop
