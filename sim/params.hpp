@@ -141,9 +141,8 @@ struct Params {
   bool share_goal = true;        ///< T5: the founder's ACK carries where it saw the goal
   double depart_gap = 50;        ///< T5: ticks between departures, in ACK order (0: all at once)
   double nest_crowd = 200;  ///< no edge following (allocated) nor trail fall-back this near the nest [cm]
-  bool founder_retrace =
-      false;               ///< T4: a founder's trail home that is the nest alone starts where it left its way
-  bool dm_rescout = true;  ///< T6s: a decision maker whose wait heard no REQUEST scouts again
+  bool founder_retrace = false;  ///< T4: a founder whose trail home is the nest alone goes back along its way
+  bool dm_rescout = true;        ///< T6s: a decision maker whose wait heard no REQUEST scouts again
   bool founder_in_crowd = false;  ///< T4: a founder held off the nest by its crowd asks from where it stands
   double give_way = 20;  ///< T6: a resting robot pressed by another backs away this long [ticks] (0: never)
   bool single_child = true;      ///< row #1 (TA): allocated explorers attach only to an unclaimed subgoal

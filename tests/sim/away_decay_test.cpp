@@ -65,9 +65,9 @@ TEST(AwayDecay, EachTripHomeWithoutASightingWeakensTheAwayFieldByItsFactor) {
 // by the full away field the path does not form within T_max; with away_decay it forms (the screen's
 // case, docs/detours.md). The chain of runs differs from the scouts' first fruitless trips on.
 TEST(AwayDecay, AWallWithAFarDoorwayFormsWhenSearchersLeanLessOnTheAwayField) {
-  Params on;                 // the default
-  on.dead_end_traps = 5;     // as measured: an edge following turned back after 5 T_trap without progress
-  on.resume_search = false;  // as measured: every trip explores from the nest (with it both form)
+  Params on;                    // the default
+  test::hasty_along_walls(on);  // as measured
+  on.resume_search = false;     // as measured: every trip explores from the nest (with it both form)
   Params off = on;
   off.away_decay = 1.0;
   const Scenario s = load_scenario(test::source_path("tests/data/wallfar_13.toml"));

@@ -65,7 +65,7 @@ TEST(RabMedium, ByKindRunsAsEveryMessageToEveryListener) {
   // env4 60 robots seed 1: a chain's end starves, goes home and allocates from the resting robots
   // (refound_starved: T12, then T11's recalls) after tick 5 800
   Params p;
-  p.dead_end_traps = 5;  // as measured: an edge following turned back after 5 T_trap without progress
+  test::hasty_along_walls(p);  // as measured
   const auto [kind4, all4] = expect_same_run(paper(4, 60), p, 1, 6500, "env4, defaults");
   EXPECT_LT(kind4, all4 / 10) << "the medium by kind should skip most of the crowd's chatter";
   // env1 70 robots seed 3: several founders (founder_seniority's case)

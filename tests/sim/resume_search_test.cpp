@@ -75,7 +75,7 @@ TEST(ResumeSearch, ATripAfterAFruitlessOneTravelsToWhereThatOneTurnedHome) {
 // trips that resume where the last one turned home do (docs/detours.md: 26 611 against 9 587 ticks)
 TEST(ResumeSearch, TheGoalBehindTwoRoomsIsReachedWhenTripsResume) {
   Params on;
-  on.dead_end_traps = 5;  // as measured: an edge following turned back after 5 T_trap without progress
+  test::hasty_along_walls(on);  // as measured
   Params off = on;
   off.resume_search = false;
   const Scenario s = with_max_ticks(load_scenario(test::source_path("tests/data/rooms_1.toml")), 12000);

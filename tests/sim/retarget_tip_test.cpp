@@ -46,8 +46,8 @@ Outcome run_serpentine(const Params& p, std::uint64_t seed) {
 // all 8, each of the five sooner (12 379 -> 11 940, 13 301 -> 11 414, 13 553 -> 8 908, 17 725 -> 14 868,
 // 11 562 -> 7 835 ticks)
 TEST(RetargetTip, FormingRobotsKeepToTheTipsAndThePathFormsRoundTheWalls) {
-  Params on;              // the default: retarget_tip = true
-  on.dead_end_traps = 5;  // as measured: an edge following turned back after 5 T_trap without progress
+  Params on;                    // the default: retarget_tip = true
+  test::hasty_along_walls(on);  // as measured
   ASSERT_TRUE(on.retarget_tip);
   on.away_decay = 1.0;       // as measured: every trip under the full away field (with it on: 7 of 8)
   on.resume_search = false;  // ... explored from the nest

@@ -55,11 +55,11 @@ Travel run_far_door(const Params& p, Mode mode, std::uint64_t seed) {
 // travel_cap ends their trips; with it they turn along the way they came once the field traps them.
 // Task allocation: 7 -> 8 formed (seed 7).
 TEST(RouteToSighting, RobotsTrappedOnTheirWayBackToTheChainRetraceTheWayTheyCame) {
-  Params off;                 // the default: route_to_sighting = false
-  off.dead_end_traps = 5;     // as measured: an edge following turned back after 5 T_trap without progress
-  off.retarget_tip = false;   // as measured: with it far_door forms these seeds without the rule
-  off.away_decay = 1.0;       // ... and every trip under the full away field
-  off.resume_search = false;  // ... explored from the nest
+  Params off;                    // the default: route_to_sighting = false
+  test::hasty_along_walls(off);  // as measured
+  off.retarget_tip = false;      // as measured: with it far_door forms these seeds without the rule
+  off.away_decay = 1.0;          // ... and every trip under the full away field
+  off.resume_search = false;     // ... explored from the nest
   Params on = off;
   on.route_to_sighting = true;
   for (const std::uint64_t seed : {1, 5, 6, 7}) {
@@ -81,11 +81,11 @@ TEST(RouteToSighting, RobotsTrappedOnTheirWayBackToTheChainRetraceTheWayTheyCame
 // against the wall until travel_cap ends their trips); the other seeds form within 1 200 ticks of
 // off, six of them walking a kept way for 500-4 000 robot-ticks.
 TEST(WalkWay, RobotsOfTaskAllocationWalkTheWayTheyCameBackToTheChain) {
-  Params off;                 // the default: walk_way = false
-  off.dead_end_traps = 5;     // as measured: an edge following turned back after 5 T_trap without progress
-  off.lead_way = false;       // as measured: no robot walks the founder's way either
-  off.away_decay = 1.0;       // ... and every trip under the full away field
-  off.resume_search = false;  // ... explored from the nest
+  Params off;                    // the default: walk_way = false
+  test::hasty_along_walls(off);  // as measured
+  off.lead_way = false;          // as measured: no robot walks the founder's way either
+  off.away_decay = 1.0;          // ... and every trip under the full away field
+  off.resume_search = false;     // ... explored from the nest
   ASSERT_FALSE(off.walk_way);
   Params on = off;
   on.walk_way = true;
@@ -119,7 +119,7 @@ TEST(WalkWay, RobotsOfTaskAllocationWalkTheWayTheyCameBackToTheChain) {
 // path forms sooner on six seeds (seed 5: 19 812 -> 8 172 ticks; all eight 92 001 -> 77 273).
 TEST(ShareWay, ToldRobotsWalkTheWayTheTellerCameAndTravelFarLess) {
   Params off;
-  off.dead_end_traps = 5;  // as measured: an edge following turned back after 5 T_trap without progress
+  test::hasty_along_walls(off);  // as measured
   off.share_after = 0;
   off.away_decay = 1.0;       // as measured: every trip under the full away field
   off.resume_search = false;  // ... explored from the nest
@@ -154,8 +154,8 @@ TEST(ShareWay, ToldRobotsWalkTheWayTheTellerCameAndTravelFarLess) {
 // the field, into the wall, and the path does not form within T_max; with it they walk the
 // founder's way through the doorway and the path forms.
 TEST(LeadWay, AllocatedRobotsWalkTheWayTheFounderFoundTheGoalBy) {
-  Params on;              // the default
-  on.dead_end_traps = 5;  // as measured: an edge following turned back after 5 T_trap without progress
+  Params on;                    // the default
+  test::hasty_along_walls(on);  // as measured
   ASSERT_TRUE(on.lead_way);
   on.resume_search = false;  // as measured: every trip explores from the nest
   Params off = on;
@@ -182,8 +182,8 @@ TEST(LeadWay, AllocatedRobotsWalkTheWayTheFounderFoundTheGoalBy) {
 // the goal's room above the nest's, its door three rooms round), 100 robots, seed 23, task allocation,
 // the first 13 000 ticks: with the rule the way goes on along the founder's leg home to the goal.
 TEST(WayHomeLeg, AFounderThatFoundTheGoalOnItsWayHomeTellsAWayThatReachesIt) {
-  Params off;              // the default
-  off.dead_end_traps = 5;  // as measured: an edge following turned back after 5 T_trap without progress
+  Params off;                    // the default
+  test::hasty_along_walls(off);  // as measured
   ASSERT_FALSE(off.way_home_leg);
   Params on = off;
   on.way_home_leg = true;

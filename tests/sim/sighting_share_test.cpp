@@ -137,7 +137,7 @@ TEST(SightingShare, AMessageToldAtTheFirstTellingTickIsHeardTheNextTick) {
 // 0 (seed 2 also with 30 % packet loss, whose draws are made per message heard).
 TEST(SightingShare, ListeningFromTheFirstTellingTickLeavesTheRunsAsTheyWere) {
   Params p;
-  p.dead_end_traps = 5;  // as measured: an edge following turned back after 5 T_trap without progress
+  test::hasty_along_walls(p);  // as measured
   p.share_after = 3000;
   p.retarget_tip = false;   // the code whose hashes these are re-targeted by the distance to the nest alone
   p.away_decay = 1.0;       // ... and explored under the full away field on every trip

@@ -42,11 +42,11 @@ Outcome run_in(const char* arena, const Params& p, Mode mode, std::uint64_t seed
 // to a spot, backoff_far_spot: a few links at spots on the way). Task allocation 8 -> 7 since
 // blocked_trip_ends, stop_at_view_edge and spot_patience were removed (6 -> 8 before: seeds 1, 7)
 TEST(SpotOnWay, TheChainGrowsTheWayTheRobotsCameToAFarDoorway) {
-  Params off;                 // the default: spot_on_way = false
-  off.dead_end_traps = 5;     // as measured: an edge following turned back after 5 T_trap without progress
-  off.retarget_tip = false;   // as measured: with it far_door forms these seeds without the rule
-  off.away_decay = 1.0;       // ... and every trip under the full away field
-  off.resume_search = false;  // ... explored from the nest
+  Params off;                    // the default: spot_on_way = false
+  test::hasty_along_walls(off);  // as measured
+  off.retarget_tip = false;      // as measured: with it far_door forms these seeds without the rule
+  off.away_decay = 1.0;          // ... and every trip under the full away field
+  off.resume_search = false;     // ... explored from the nest
   Params on = off;
   on.spot_on_way = true;
 
@@ -72,8 +72,8 @@ TEST(SpotOnWay, TheChainGrowsTheWayTheRobotsCameToAFarDoorway) {
 // round the wall's end by its edge, links are still laid at spots on their way (seeds 1, 5, 6).
 TEST(SpotOnWay, OnlyAWayThatWentRoundAnObstacleGivesTheSpot) {
   Params on;
-  on.dead_end_traps = 5;  // as measured: an edge following turned back after 5 T_trap without progress
-  on.lead_way = false;    // as measured: the robots then come by the field, not along the founder's way
+  test::hasty_along_walls(on);  // as measured
+  on.lead_way = false;          // as measured: the robots then come by the field, not along the founder's way
   on.spot_on_way = true;
   Params edge = on;
   edge.way_after_edge = true;

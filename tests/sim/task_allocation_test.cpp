@@ -699,7 +699,7 @@ int allocated_ever_in_chain(const Params& p, const Scenario& s, std::uint64_t se
 TEST(TaRun, OneChainNoSideBranches) {
   const Scenario s = env1_with(60);
   Params p = load_params(test::source_path("genomes/paper-single.toml"));
-  p.dead_end_traps = 5;  // as measured: an edge following turned back after 5 T_trap without progress
+  test::hasty_along_walls(p);  // as measured
   p.lead_way = false;
   p.away_decay = 1.0;  // and every trip under the full away field, as measured
   ASSERT_TRUE(p.single_child && p.ta_backoff_spot && p.depart_gap > 0);
@@ -735,7 +735,7 @@ TEST(TaRun, OneChainNoSideBranches) {
 TEST(TaRun, LinksStepTowardTheNestNotSideways) {
   const Scenario s = env1_with(100);
   Params p = load_params(test::source_path("genomes/default.toml"));
-  p.dead_end_traps = 5;  // as measured: an edge following turned back after 5 T_trap without progress
+  test::hasty_along_walls(p);  // as measured
   p.lead_way = false;
   int red = 0;
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "sim/controllers/trail.hpp"
+#include "sim/params.hpp"
 #include "sim/scenario.hpp"
 
 namespace swarmpath::test {
@@ -43,6 +44,10 @@ inline sim::Trail trip_through_the_doorway() {
   walk(t, {3.0, 0.0}, {3.0, 3.0});
   return t;
 }
+
+/// The wall patience of the runs measured before `dead_end_traps = 20` (docs/detours.md, "Patience
+/// along walls"): an edge following that made no progress turned back after 5 T_trap.
+inline void hasty_along_walls(sim::Params& p) { p.dead_end_traps = 5; }
 
 inline sim::Scenario small_arena(const std::string& extra = "", int robots = 10) {
   return sim::parse_scenario(small_arena_toml(extra, robots), "small.toml");
