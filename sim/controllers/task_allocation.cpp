@@ -219,6 +219,9 @@ void refound(const TaContext& c, RobotMemory& mem) {
   mem.pf.sighting = mem.pf.parent.last_seen;
   mem.pf.has_sighting = true;
   mem.pf.trip_start = c.in.tick;
+  // its way out to the chain's end, as it came: a back-off that took the trail home from the crumb
+  // nearest it among those nearer the nest (start_home_within) may have cut it at a crumb across a wall
+  mem.trail.fall_back();
   if (c.p.route_to_sighting)
     mem.route.keep(mem.trail, c.p.way_home_leg);  // R: its way out to the chain's end, to lead along
   keep_founder_way(c.p, mem);                     // R lead_way: and to tell

@@ -5,6 +5,7 @@
 #include "sim/controllers/task_allocation.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -13,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "sim/controller.hpp"
+#include "sim/controllers/units.hpp"
 #include "sim/hash.hpp"
 #include "sim/step.hpp"
 #include "test_support.hpp"
@@ -538,6 +540,38 @@ TEST(TaTable, T12AChainEndLeftAloneGoesHomeToFoundTheRestOfThePath) {
   Percept at = told.percept();
   path_formation_step(at, p, parent);
   EXPECT_EQ(parent.pf.help_until, at.tick + 3 * t_refound);
+}
+
+// T12 with lead_way: the way a chain's end keeps, to lead the robots it fetches back along, is its
+// way out to where it stands, though backing off to its spot cut its trail at the crumb nearest it
+// among those nearer the nest, across a wall (training serpentine-1, 100 robots, seed 22: a trail of
+// 101 crumbs cut to 12, and the robots led from the nest to the foot of the wall)
+TEST(TaTable, T12TheEndLeadsAlongTheWayItCameThoughItsBackOffCutIt) {
+  const Params p = refounding();
+  ASSERT_TRUE(p.lead_way);
+  RobotMemory mem = chain_end(static_cast<std::int64_t>(p.t_refound));
+  Reading r;
+  r.at = {1.4, 0.0};  // beyond its parent (0.7, 0): it came from the east
+  // a wall along x = -0.5 up to y = 4; the way: down the nest's side, over the wall's end, back down
+  mem.trail.reset(kNest);
+  test::walk(mem.trail, kNest, {-1.0, -3.0});
+  test::walk(mem.trail, {-1.0, -3.0}, {-1.0, 4.5});
+  test::walk(mem.trail, {-1.0, 4.5}, {3.0, 4.5});
+  test::walk(mem.trail, {3.0, 4.5}, {3.0, 0.0});
+  test::walk(mem.trail, {3.0, 0.0}, r.at);
+  const int way_out = mem.trail.size();
+  // the back-off, trapped: home from the crumb nearest it among those nearer the nest than its target
+  mem.trail.start_home_within(r.at, kNest, dist(mem.pf.parent.last_seen, kNest));
+  ASSERT_LT(mem.trail.size(), way_out / 2);
+  ASSERT_LT(mem.trail.crumb(mem.trail.size() - 1).x, -0.5);  // across the wall
+
+  ASSERT_EQ(fire(mem, r, p), "T12");
+  EXPECT_EQ(mem.trail.size(), way_out);  // home along the way it came, too
+  std::array<Vec2, ToldWay::kMax> corners{};
+  const int n = mem.route.corners(mem.pf.sighting, p.r_vis * kCm, corners);
+  ASSERT_GT(n, 2);  // the way it leads along reaches its parent: over the wall's end, not into the wall
+  EXPECT_LT(dist(corners[static_cast<std::size_t>(n - 1)], mem.pf.sighting), 1.0);
+  EXPECT_TRUE(std::any_of(corners.begin(), corners.begin() + n, [](Vec2 c) { return c.y > 4.0; }));
 }
 
 TEST(TaTable, T12TheChainEndCountsNFromItsTripHome) {  // Eq. (1)-(3) with t its trip home
