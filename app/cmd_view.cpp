@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // swarmpath view: a recorded run (.swrec) as one self-contained web page that plays it, a video
-// through ffmpeg, or one frame as JSON.
+// through ffmpeg, one frame as JSON, or a census of the run as JSON.
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -9,6 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "census.hpp"
 #include "cli.hpp"
 #include "commands.hpp"
 #include "common.hpp"
@@ -33,6 +34,7 @@ struct ViewOptions {
   int fps = 25;
   int width = 960;
   std::optional<std::int64_t> frame_json;
+  bool census = false;
 };
 
 std::string title_of(const sim::Recording& r) {
@@ -67,12 +69,13 @@ nlohmann::ordered_json frame_json(const sim::Recording& r, std::size_t f) {
 }
 
 int run_view(const ViewOptions& o, std::ostream& out, std::ostream& err) {
-  if (o.out.empty() && o.mp4.empty() && o.gif.empty() && !o.frame_json)
+  if (o.out.empty() && o.mp4.empty() && o.gif.empty() && !o.frame_json && !o.census)
     throw sim::ConfigError(
         "view", 0, "",
-        "say what to write: --out page.html, --mp4 run.mp4, --gif run.gif or --frame-json TICK");
-  if ((!o.mp4.empty() || !o.gif.empty() || o.frame_json) && o.recordings.size() != 1)
-    throw sim::ConfigError("view", 0, "", "--mp4, --gif and --frame-json take one recording");
+        "say what to write: --out page.html, --mp4 run.mp4, --gif run.gif, --frame-json TICK or --census");
+  if ((!o.mp4.empty() || !o.gif.empty() || o.frame_json || o.census) && o.recordings.size() != 1)
+    throw sim::ConfigError("view", 0, "", "--mp4, --gif, --frame-json and --census take one recording");
+  if (o.frame_json && o.census) throw sim::ConfigError("view", 0, "", "--frame-json or --census, not both");
   std::vector<evolve::NamedPath> inputs;
   for (const std::string& path : o.recordings) inputs.push_back({"recording", path});
   evolve::check_output_paths(inputs, {{"--out", o.out}, {"--mp4", o.mp4}, {"--gif", o.gif}});
@@ -85,6 +88,10 @@ int run_view(const ViewOptions& o, std::ostream& out, std::ostream& err) {
   }
   if (o.frame_json) {
     out << frame_json(recs[0], frame_at(recs[0], *o.frame_json)).dump(2) << "\n";
+    return kExitOk;
+  }
+  if (o.census) {
+    out << census(recs[0]).dump(2) << "\n";
     return kExitOk;
   }
   if (!o.out.empty()) {
@@ -141,6 +148,10 @@ Runner add_view(CLI::App& app) {
   app.add_option(
       "--frame-json", o->frame_json,
       "Print the recorded frame at or before this tick as JSON (robots' positions, LEDs, states, links)");
+  app.add_flag("--census", o->census,
+               "Print a census of the run as JSON: robot-ticks in each controller state, the table rows "
+               "that fired, and the trips (each stay in one exploring state): count, median ticks, the "
+               "state each ended in");
   return [o](std::ostream& out, std::ostream& err) { return run_view(*o, out, err); };
 }
 

@@ -130,6 +130,59 @@ TEST(View, FrameJsonGivesTheRecordedFrame) {
   EXPECT_EQ(r7["state"], std::string(rec.state_name(rec.state[10 * 20 + 7])));
 }
 
+// view --census counts the run from its state changes: every robot's every tick in one state, each
+// change's row once, and each trip (a stay in an exploring state) ended once or still under way
+TEST(View, CensusCountsEveryTickEveryRowAndEveryTrip) {
+  const std::string dir = temp_dir("census");
+  for (const std::string mode : {"pf", "ta"}) {
+    const std::string file = recorded(dir, mode);
+    const sim::Recording rec = read_recording_file(file);
+    const auto r = cli({"view", file, "--census"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["mode"], mode);
+    std::int64_t ticks = 0;
+    for (const auto& [state, n] : j["robot_ticks"].items()) ticks += n.get<std::int64_t>();
+    EXPECT_EQ(ticks, rec.robots * rec.ticks) << mode;
+    std::int64_t pf_rows = 0;
+    std::int64_t ta_rows = 0;
+    for (const sim::StateChange& c : rec.changes) {
+      pf_rows += c.pf_row > 0 ? 1 : 0;
+      ta_rows += c.ta_row > 0 ? 1 : 0;
+    }
+    std::int64_t counted = 0;
+    for (const auto& [row, n] : j["rows_fired"]["path_formation"].items()) counted += n.get<std::int64_t>();
+    EXPECT_EQ(counted, pf_rows) << mode;
+    EXPECT_EQ(j["rows_fired"].contains("task_allocation"), ta_rows > 0) << mode;
+    if (ta_rows > 0) {
+      counted = 0;
+      for (const auto& [row, n] : j["rows_fired"]["task_allocation"].items())
+        counted += n.get<std::int64_t>();
+      EXPECT_EQ(counted, ta_rows);
+    }
+    // trips by their exploring state; every robot sets out exploring at tick 0, and the path
+    // formed, so some trip ended forming a link
+    std::int64_t count = 0;
+    std::int64_t forming = 0;
+    for (const auto& [from, t] : j["trips"].items()) {
+      std::int64_t ended = 0;
+      for (const auto& [to, n] : t["ended_in"].items()) {
+        ended += n.get<std::int64_t>();
+        if (to.ends_with("subgoal_forming")) forming += n.get<std::int64_t>();
+      }
+      EXPECT_EQ(ended, t["ended"].get<std::int64_t>()) << from;
+      EXPECT_LE(ended, t["count"].get<std::int64_t>()) << from;
+      if (ended > 0) {
+        EXPECT_GT(t["median_ticks"].get<double>(), 0.0) << from;
+      }
+      count += t["count"].get<std::int64_t>();
+    }
+    EXPECT_GE(count, rec.robots) << mode;
+    EXPECT_TRUE(rec.success) << mode;
+    EXPECT_GT(forming, 0) << mode;
+  }
+}
+
 TEST(View, BadInputIsRejected) {
   const std::string dir = temp_dir("bad");
   { std::ofstream(dir + "/junk.swrec") << "not a recording at all"; }
@@ -143,6 +196,8 @@ TEST(View, BadInputIsRejected) {
   EXPECT_EQ(nothing.code, 2);
   EXPECT_NE(nothing.err.find("--out"), std::string::npos);
   EXPECT_EQ(cli({"view", file, file, "--mp4", dir + "/x.mp4"}).code, 2);
+  EXPECT_EQ(cli({"view", file, file, "--census"}).code, 2);
+  EXPECT_EQ(cli({"view", file, "--frame-json", "5", "--census"}).code, 2);
   const auto unwritable = cli({"view", file, "--out", dir + "/no/such/dir/x.html"});
   EXPECT_EQ(unwritable.code, 2) << "the output's folder must exist";
   EXPECT_NE(unwritable.err.find("--out"), std::string::npos) << unwritable.err;
