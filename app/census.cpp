@@ -34,7 +34,7 @@ nlohmann::ordered_json by_count(const std::map<std::string, std::int64_t>& count
   return o;
 }
 
-// the trips that began in one state: how many, how long those that ended lasted, what they ended in
+// the trips in one exploring state: how many, how long those that ended lasted, what they ended in
 struct Trips {
   std::int64_t count = 0;
   std::vector<std::int64_t> ticks;
@@ -62,18 +62,16 @@ nlohmann::ordered_json census(const sim::Recording& r) {
     seen[i] = true;
     state[i] = c.from;
   }
-  std::vector<std::int64_t> since(n, 0);        // the tick the current state began
-  std::vector<std::int64_t> trip_start(n, -1);  // the tick the current trip began (-1: none)
-  for (std::size_t i = 0; i < n; ++i)
-    if (exploring(r.state_name(state[i]))) trip_start[i] = 0;
-
   std::map<std::string, std::int64_t> ticks_in;
   std::map<std::string, std::int64_t> pf_rows;
   std::map<std::string, std::int64_t> ta_rows;
-  std::map<std::string, Trips> trips;  // by the state the trip began in
+  std::map<std::string, Trips> trips;           // by the exploring state the trip stays in
+  std::vector<std::int64_t> since(n, 0);        // the tick the current state began
+  std::vector<std::int64_t> trip_start(n, -1);  // the tick the current trip began (-1: none)
   std::vector<std::string> trip_from(n);
   for (std::size_t i = 0; i < n; ++i) {
-    if (trip_start[i] < 0) continue;
+    if (!exploring(r.state_name(state[i]))) continue;
+    trip_start[i] = 0;
     trip_from[i] = r.state_name(state[i]);
     ++trips[trip_from[i]].count;
   }
