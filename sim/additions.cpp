@@ -74,13 +74,15 @@ const std::array kAdditions{
   Addition{"rest_recruit", "a resting robot joins a chain's free end in view", "§2.6 T10", kTa, {{{"rest_recruit", 0}}}, {}},
   Addition{"recruit_call", "a chain's end calls resting robots on the medium", "§2.6 T10", kTa, {{{"recruit_call", 0}}}, {"rest_recruit", "single_child"}},
   Addition{"refound_starved", "a chain's end fetches more robots (a second allocation)", "§2.6 T11, T12", kTa, {{{"refound_starved", 0}}}, {"recruit_call"}},
+  Addition{"T_leaf_allocated", "an allocated leaf in a fan leaves the chain and goes home", "§2.3 #21", kTa, {{{"T_leaf_allocated", 0}}}, {}},
 };
 
 // additions under trial: registered so that the ablation can measure them, off in the default
 // (docs/detours.md)
-constexpr std::array<std::string_view, 10> kOffInDefault{
+constexpr std::array<std::string_view, 11> kOffInDefault{
     "spot_on_way", "way_after_edge",  "leaf_in_fan",      "route_to_sighting", "walk_way",
-    "share_way",   "founder_retrace", "founder_in_crowd", "way_home_leg",      "anywhere_after_edge"};
+    "share_way",   "founder_retrace", "founder_in_crowd", "way_home_leg",      "anywhere_after_edge",
+    "T_leaf_allocated"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
 constexpr std::array kSpecDefaults{

@@ -110,6 +110,7 @@ struct Params {
   double form_retries = 3;       ///< rows #7, #8b: a robot losing its target goes home, this often
   double t_leaf = 1500;          ///< row #21: a RED leaf nobody names this long goes home [ticks]
   bool leaf_in_fan = false;      ///< row #21: T_leaf counts only while another branch is in view
+  double t_leaf_allocated = 0;   ///< row #21 (TA): an allocated leaf in a fan this long goes home [ticks]
   bool walk_way =
       false;  ///< site_fidelity: a trip to the sighting walks the way it was seen from, from the start
   bool share_way = false;          ///< share_sighting: the teller tells its own way there, corner by corner

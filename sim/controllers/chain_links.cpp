@@ -102,7 +102,8 @@ void heir_becomes_parent(const PfContext& c, PfMemory& m) { m.parent = follow(*c
 // row 21 [R] (T_leaf): a subgoal that nobody has named as parent or target for T_leaf ticks is a leaf
 // that no explorer extends (a side branch of the fan at the goal); it leaves as row 16's does
 bool leaf_unextended(const PfContext& c) {
-  return c.p.t_leaf > 0.0 && static_cast<double>(c.m.childless) >= c.p.t_leaf;
+  const double limit = c.m.role == PfRole::kAllocated ? c.p.t_leaf_allocated : c.p.t_leaf;
+  return limit > 0.0 && static_cast<double>(c.m.childless) >= limit;
 }
 
 bool sees_another_branch(const Percept& in, const PfMemory& m) {

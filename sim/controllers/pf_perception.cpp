@@ -238,12 +238,14 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
     }
   }
   // T_leaf [R]: how long this subgoal has stood without a robot in view naming it (a leaf nobody extends)
-  if (p.t_leaf > 0.0 && m.state == PfState::kSubgoal && m.role == PfRole::kSwarm) {
+  // T_leaf_allocated [R]: the same count for an allocated subgoal, only while it stands in a fan
+  const bool allocated = p.t_leaf_allocated > 0.0 && m.role == PfRole::kAllocated;
+  if (m.state == PfState::kSubgoal && (allocated || (p.t_leaf > 0.0 && m.role == PfRole::kSwarm))) {
     bool named = false;
     for_each_naming(in, [&](int, int n) { named = named || n == in.id; });
     if (named) {
       m.childless = 0;
-    } else if (!p.leaf_in_fan || sees_another_branch(in, m)) {
+    } else if ((!allocated && !p.leaf_in_fan) || sees_another_branch(in, m)) {
       ++m.childless;
     }
   } else {

@@ -499,7 +499,8 @@ TEST(PfTable, Row7hLostTargetGoesHomeWhileRetriesLast) {
 
 // R: T_leaf (row #21; docs/detours.md). A RED subgoal that no robot in view names as its parent or
 // target for T_leaf ticks in a row leaves the chain and goes home; a child's light (or a forming
-// robot's) naming it restarts the count; allocated robots (task allocation) and T_leaf = 0 never leave.
+// robot's) naming it restarts the count; allocated robots (task allocation, T_leaf_allocated = 0) and
+// T_leaf = 0 never leave.
 TEST(PfTable, Row21ALeafNobodyNamesForTLeafLeavesTheChain) {
   Params p;
   p.t_leaf = 3;
@@ -554,6 +555,35 @@ TEST(PfTable, Row21WithLeafInFanOnlyALeafThatSeesAnotherBranchLeaves) {
   EXPECT_EQ(fire(lone, tip, plain), "");
   EXPECT_EQ(fire(lone, tip, plain), "");
   EXPECT_EQ(fire(lone, tip, plain), "#21");
+}
+
+// T_leaf_allocated [R] (row #21, task allocation): an allocated subgoal counts its unnamed ticks only
+// while it sees another branch (leaf_in_fan's test, whatever leaf_in_fan says), and leaves at
+// T_leaf_allocated; the lone tip of a single chain, waiting for the robots its end fetches, stays
+TEST(PfTable, Row21WithTLeafAllocatedAnAllocatedLeafInAFanLeaves) {
+  Params p;
+  p.t_leaf = 100;
+  p.t_leaf_allocated = 3;
+  PfMemory tip_memory = in_state(PfState::kSubgoal);
+  tip_memory.role = PfRole::kAllocated;
+  tip_memory.parent = tracked(5, {0.7, 0.0});
+  Reading tip;
+  tip.add(Led::kRed, 5, 0, 70, 2);   // my parent, whose light names robot 2
+  tip.add(Led::kRed, 2, 10, 95, 1);  // my parent's parent: still my own chain
+  Reading fan = tip;
+  fan.add(Led::kRed, 9, 90, 60, 2);  // another branch from robot 2
+  PfMemory m = tip_memory;
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(fire(m, tip, p), "");
+  EXPECT_EQ(m.childless, 0);
+  EXPECT_EQ(fire(m, fan, p), "");
+  EXPECT_EQ(fire(m, fan, p), "");
+  EXPECT_EQ(fire(m, fan, p), "#21");  // at T_leaf_allocated, not T_leaf
+  EXPECT_EQ(m.state, PfState::kReturnToNest);
+  Params off = p;
+  off.t_leaf_allocated = 0;
+  PfMemory stays = tip_memory;
+  for (int i = 0; i < 6; ++i) EXPECT_EQ(fire(stays, fan, off), "");
+  EXPECT_EQ(stays.childless, 0);
 }
 
 TEST(PfTable, Row9aSubgoalSeesTheNest) {  // label g
