@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "stalls.hpp"
+
 namespace swarmpath::app {
 
 namespace {
@@ -116,7 +118,8 @@ nlohmann::ordered_json census(const sim::Recording& r) {
           {"success", r.success},
           {"robot_ticks", by_count(ticks_in)},
           {"rows_fired", rows},
-          {"trips", by_start}};
+          {"trips", by_start},
+          {"stalls", stalls_json(r)}};
 }
 
 }  // namespace swarmpath::app
