@@ -28,9 +28,17 @@ std::int64_t int_in(const TableReader& t, std::string_view key, std::int64_t fal
   return v;
 }
 
-BenchmarkFamily read_family(const TableReader& t, int most_robots) {
+BenchmarkFamily read_family(const TableReader& t, int most_robots, bool screen) {
   BenchmarkFamily f;
   f.spec = sim::arenas::read_spec(t, "family", "params");
+  f.label = std::string(f.spec.family->name);
+  if (t.has("label")) {
+    f.label = t.string("label");
+    if (f.label.empty() || f.label == "paper" || f.label == "all")
+      t.fail("label", "a family's rows need a name other than \"\", \"paper\" and \"all\"");
+  } else {
+    t.allow("label");
+  }
   if (const auto params = t.table("params"); params && params->has("robots")) {
     params->fail("robots", "the benchmark's robots = [...] sets the robot counts of every arena");
   }
@@ -40,10 +48,17 @@ BenchmarkFamily read_family(const TableReader& t, int most_robots) {
   }
   std::set<std::uint64_t> seen;
   for (const double s : t.numbers("seeds")) {
-    if (s != std::floor(s) || !sim::arenas::is_benchmark_seed(static_cast<std::uint64_t>(std::max(0.0, s)))) {
+    const bool benchmark_seed = sim::arenas::is_benchmark_seed(static_cast<std::uint64_t>(std::max(0.0, s)));
+    if (s != std::floor(s) || s < 0 || (!screen && !benchmark_seed)) {
       t.fail("seeds", "benchmark arenas take seeds in [" + std::to_string(sim::arenas::kBenchmarkSeedLo) +
                           ", " + std::to_string(sim::arenas::kBenchmarkSeedHi - 1) +
                           "], which no screen or tuning run draws (got " + sim::toml_number(s) + ")");
+    }
+    if (screen && benchmark_seed) {
+      t.fail("seeds", "a screen's arenas take seeds outside the benchmarks' range [" +
+                          std::to_string(sim::arenas::kBenchmarkSeedLo) + ", " +
+                          std::to_string(sim::arenas::kBenchmarkSeedHi - 1) +
+                          "]: choose on a screen, measure on a benchmark (got " + sim::toml_number(s) + ")");
     }
     const auto seed = static_cast<std::uint64_t>(s);
     if (!seen.insert(seed).second) t.fail("seeds", "seed " + std::to_string(seed) + " named twice");
@@ -61,6 +76,14 @@ BenchmarkConfig parse(const sim::TomlDoc& doc, const std::string& base_dir) {
   c.name = root.string("name");
   if (c.name.empty()) root.fail("name", "must not be empty");
   c.version = static_cast<int>(int_in(root, "version", 1, 1, 1000000));
+  if (root.has("purpose")) {
+    const std::string purpose = root.string("purpose");
+    if (purpose != "benchmark" && purpose != "screen")
+      root.fail("purpose", "must be \"benchmark\" or \"screen\" (got \"" + purpose + "\")");
+    c.screen = purpose == "screen";
+  } else {
+    root.allow("purpose");
+  }
   const std::int64_t generator = root.integer("generator_version");
   if (generator != sim::arenas::kGeneratorVersion) {
     root.fail(
@@ -90,7 +113,8 @@ BenchmarkConfig parse(const sim::TomlDoc& doc, const std::string& base_dir) {
     root.allow("paper");
   }
   const int most = *std::max_element(c.robots.begin(), c.robots.end());
-  for (const TableReader& f : root.table_array("family")) c.families.push_back(read_family(f, most));
+  for (const TableReader& f : root.table_array("family"))
+    c.families.push_back(read_family(f, most, c.screen));
   if (c.families.empty()) root.fail("family", "a benchmark needs at least one [[family]] of arenas");
   root.finish();
   return c;

@@ -3,6 +3,8 @@
 // and arena seeds (all from the benchmarks' own range, which no screen or tuning run draws), the
 // robot counts, the simulation seeds and the paper arenas to run beside them. Versioned: the
 // arena generator's version is part of it, so that a benchmark never silently changes its arenas.
+// A screen (purpose = "screen") is the same for the training side: its arena seeds lie outside the
+// benchmarks' range, so that rules are chosen on it and measured on a benchmark.
 #pragma once
 
 #include <cstdint>
@@ -16,13 +18,15 @@ namespace swarmpath::app {
 
 struct BenchmarkFamily {
   sim::arenas::ArenaSpec spec;       ///< its robots parameter is the largest robot count
-  std::vector<std::uint64_t> seeds;  ///< arena seeds, each a benchmark seed
+  std::vector<std::uint64_t> seeds;  ///< arena seeds, each a benchmark seed (a screen's: none is)
+  std::string label;                 ///< its rows' name: `label`, else the family's name
 };
 
 struct BenchmarkConfig {
   std::string file;
   std::string name;
   int version = 1;
+  bool screen = false;          ///< purpose = "screen": arena seeds outside the benchmarks' range
   std::vector<int> robots;      ///< robot counts of every arena
   int seeds = 1;                ///< runs per arena and robot count (the same seeds with and without TA)
   std::uint64_t seed_base = 1;  ///< simulation seeds seed_base .. seed_base + seeds - 1

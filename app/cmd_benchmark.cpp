@@ -35,12 +35,20 @@ struct BenchmarkOptions {
   std::vector<std::string> families;  // only these (default: all)
   bool no_paper = false;
   std::optional<int> threads;
+  std::optional<std::uint64_t> seed_base;  // a screen's: simulation seeds from here instead
   std::string json, markdown, svg;
 };
 
 int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& evaluators, std::ostream& out,
                   std::ostream& err) {
-  const BenchmarkConfig c = load_benchmark_config(o.config);
+  BenchmarkConfig c = load_benchmark_config(o.config);
+  if (o.seed_base) {
+    if (!c.screen)
+      throw sim::ConfigError("--seed-base", 0, "",
+                             "a benchmark's simulation seeds are part of its version; only a screen "
+                             "(purpose = \"screen\") takes other seeds");
+    c.seed_base = *o.seed_base;
+  }
   const std::vector<sim::Mode> modes = path_modes(o.mode);
   const bool both = modes.size() == 2;
   const bool pf = both || modes[0] == sim::Mode::kPathFormation;
@@ -55,11 +63,13 @@ int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& eva
   // the families asked for, then their arenas and the paper arenas, as one scenario list
   std::vector<const BenchmarkFamily*> chosen;
   std::vector<std::string> groups;
+  std::vector<std::string> label_of;  // each arena's row, in the order they are drawn
   for (const BenchmarkFamily& f : c.families) {
-    const std::string name(f.spec.family->name);
+    const std::string& name = f.label;
     if (!o.families.empty() && std::find(o.families.begin(), o.families.end(), name) == o.families.end())
       continue;
     chosen.push_back(&f);
+    label_of.insert(label_of.end(), f.seeds.size(), name);
     if (std::find(groups.begin(), groups.end(), name) == groups.end()) groups.push_back(name);
   }
   for (const std::string& f : o.families) {
@@ -74,12 +84,14 @@ int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& eva
   std::vector<std::string> group_of;
   std::vector<double> astar8;
   nlohmann::ordered_json arena_list = nlohmann::ordered_json::array();
-  for (const sim::arenas::GeneratedArena& a : arenas) {
+  for (std::size_t k = 0; k < arenas.size(); ++k) {
+    const sim::arenas::GeneratedArena& a = arenas[k];
     scenarios.push_back(sim::with_max_ticks(a.scenario, c.max_ticks, c.file));
-    group_of.push_back(a.scenario.origin->family);
+    group_of.push_back(label_of[k]);
     astar8.push_back(sim::to_tu(a.astar8_m));
     arena_list.push_back({{"name", a.scenario.name},
                           {"family", a.scenario.origin->family},
+                          {"row", label_of[k]},
                           {"seed", a.scenario.origin->seed},
                           {"class", std::string(sim::to_string(a.scenario.env_class))},
                           {"astar8_tu", sim::to_tu(a.astar8_m)}});
@@ -221,6 +233,8 @@ Runner add_benchmark(CLI::App& app, const evolve::EvaluatorFactory& evaluators) 
   app.add_option("--families", o->families, "Only these families, e.g. wall-gap,rooms")->delimiter(',');
   app.add_flag("--no-paper", o->no_paper, "Leave out the paper arenas");
   add_threads_option(app, o->threads);
+  app.add_option("--seed-base", o->seed_base,
+                 "A screen's simulation seeds from this one instead of its seed_base (a rule's fresh seeds)");
   app.add_option("--json", o->json, "Write the rows, the arenas and every run as JSON");
   app.add_option("--md", o->markdown, "Write the markdown report to this file too");
   app.add_option("--svg", o->svg, "Draw the success rates per family");

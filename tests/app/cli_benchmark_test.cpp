@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The generalisation benchmark: its file is read strictly (arena seeds only from the benchmarks'
-// range, the generator version it was drawn with), the shipped benchmark loads, the report's
+// range, the generator version it was drawn with; a screen's only from outside it), the shipped
+// benchmark and training screen load, the report's
 // figures are the runs' means, and `swarmpath benchmark` reports per family and overall, with and
 // without TA, beside the paper arenas, the same at any thread count, and says whether one params
 // file beats another.
@@ -85,6 +86,55 @@ TEST(Benchmark, TheShippedBenchmarkLoads) {
   EXPECT_EQ(c.paper.size(), 8u);
   for (const BenchmarkFamily& f : c.families) {
     for (const std::uint64_t s : f.seeds) EXPECT_TRUE(sim::arenas::is_benchmark_seed(s));
+  }
+}
+
+// a screen (purpose = "screen") is the training side: seeds outside the benchmarks' range only, and a
+// family's rows may carry a label of their own (two wall-gap families, one with far doorways)
+TEST(Benchmark, AScreenTakesOnlySeedsOutsideTheBenchmarksRangeAndLabelsItsRows) {
+  std::string screen = with(kTiny, "version = 3\n", "version = 3\npurpose = \"screen\"\n");
+  screen = with(screen, "[1000001, 1000002]", "[1, 2]");
+  screen = with(screen, "[1000003]", "[3]\nlabel = \"wallfar\"");
+  const BenchmarkConfig c = parse_benchmark_config(screen, "b.toml", "");
+  EXPECT_TRUE(c.screen);
+  EXPECT_EQ(c.families[0].label, "open");
+  EXPECT_EQ(c.families[1].label, "wallfar");
+  sim::ConfigError e = error_of(with(screen, "[1, 2]", "[1, 1000002]"));
+  EXPECT_EQ(e.key(), "family[0].seeds");
+  EXPECT_NE(std::string(e.what()).find("a screen's arenas take seeds outside the benchmarks' range"),
+            std::string::npos)
+      << e.what();
+  EXPECT_EQ(error_of(with(screen, "\"screen\"", "\"tuning\"")).key(), "purpose");
+  EXPECT_EQ(error_of(with(screen, "label = \"wallfar\"", "label = \"paper\"")).key(), "family[1].label");
+  // a benchmark's seeds are its version: --seed-base only for a screen
+  const fs::path dir = temp_dir();
+  std::ofstream(dir / "screen.toml") << screen;
+  std::ofstream(dir / "bench.toml") << kTiny;
+  const auto rows = [&](const std::string& file, const std::string& base, const std::string& tag) {
+    const auto r = cli({"benchmark", "--config", (dir / file).string(), "--no-paper", "--mode", "pf",
+                        "--threads", "2", "--seed-base", base, "--json", (dir / (tag + ".json")).string()});
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(read(dir / (tag + ".json")));
+  };
+  const nlohmann::json a = rows("screen.toml", "1", "a");
+  EXPECT_EQ(a["params"]["rows"][1]["arenas"], "wallfar");
+  EXPECT_EQ(a["benchmark"]["arenas"][2]["family"], "wall-gap");
+  EXPECT_EQ(a["benchmark"]["arenas"][2]["row"], "wallfar");
+  EXPECT_EQ(a["benchmark"]["seed_base"], 1);
+  EXPECT_EQ(rows("screen.toml", "5", "b")["benchmark"]["seed_base"], 5);
+  const auto refused = cli({"benchmark", "--config", (dir / "bench.toml").string(), "--seed-base", "5"});
+  EXPECT_EQ(refused.code, 2);
+  EXPECT_NE(refused.err.find("only a screen"), std::string::npos) << refused.err;
+}
+
+TEST(Benchmark, TheShippedTrainingScreenLoads) {
+  const BenchmarkConfig c =
+      load_benchmark_config(std::string(SWARMPATH_SOURCE_DIR) + "/configs/benchmarks/training.toml");
+  EXPECT_TRUE(c.screen);
+  EXPECT_EQ(c.arenas(), 21u);
+  EXPECT_EQ(c.paper.size(), 1u);  // env8
+  for (const BenchmarkFamily& f : c.families) {
+    for (const std::uint64_t s : f.seeds) EXPECT_FALSE(sim::arenas::is_benchmark_seed(s));
   }
 }
 
