@@ -34,8 +34,8 @@ BenchmarkFamily read_family(const TableReader& t, int most_robots, bool screen) 
   f.label = std::string(f.spec.family->name);
   if (t.has("label")) {
     f.label = t.string("label");
-    if (f.label.empty() || f.label == "paper" || f.label == "all")
-      t.fail("label", "a family's rows need a name other than \"\", \"paper\" and \"all\"");
+    if (f.label.empty() || f.label == "paper" || f.label == "all families" || f.label == "paper arenas")
+      t.fail("label", "a family's rows need a name, and not \"paper\", \"all families\" or \"paper arenas\"");
   } else {
     t.allow("label");
   }
@@ -49,7 +49,9 @@ BenchmarkFamily read_family(const TableReader& t, int most_robots, bool screen) 
   std::set<std::uint64_t> seen;
   for (const double s : t.numbers("seeds")) {
     const bool benchmark_seed = sim::arenas::is_benchmark_seed(static_cast<std::uint64_t>(std::max(0.0, s)));
-    if (s != std::floor(s) || s < 0 || (!screen && !benchmark_seed)) {
+    if (screen && (s != std::floor(s) || s < 0))
+      t.fail("seeds", "arena seeds are whole numbers >= 0 (got " + sim::toml_number(s) + ")");
+    if (s != std::floor(s) || (!screen && !benchmark_seed)) {
       t.fail("seeds", "benchmark arenas take seeds in [" + std::to_string(sim::arenas::kBenchmarkSeedLo) +
                           ", " + std::to_string(sim::arenas::kBenchmarkSeedHi - 1) +
                           "], which no screen or tuning run draws (got " + sim::toml_number(s) + ")");
