@@ -35,19 +35,21 @@ struct BenchmarkOptions {
   std::vector<std::string> families;  // only these (default: all)
   bool no_paper = false;
   std::optional<int> threads;
-  std::optional<std::uint64_t> seed_base;  // a screen's: simulation seeds from here instead
+  std::uint64_t seed_base = 0;  // a screen's: simulation seeds from here instead (seed_base_given)
+  bool seed_base_given = false;
   std::string json, markdown, svg;
 };
 
 int run_benchmark(const BenchmarkOptions& o, const evolve::EvaluatorFactory& evaluators, std::ostream& out,
                   std::ostream& err) {
   BenchmarkConfig c = load_benchmark_config(o.config);
-  if (o.seed_base) {
+  if (o.seed_base_given) {
     if (!c.screen)
       throw sim::ConfigError("--seed-base", 0, "",
                              "a benchmark's simulation seeds are part of its version; only a screen "
                              "(purpose = \"screen\") takes other seeds");
-    c.seed_base = *o.seed_base;
+    check_seed_range("--seed-base", o.seed_base, c.seeds);
+    c.seed_base = o.seed_base;
   }
   const std::vector<sim::Mode> modes = path_modes(o.mode);
   const bool both = modes.size() == 2;
@@ -233,12 +235,14 @@ Runner add_benchmark(CLI::App& app, const evolve::EvaluatorFactory& evaluators) 
   app.add_option("--families", o->families, "Only these families, e.g. wall-gap,rooms")->delimiter(',');
   app.add_flag("--no-paper", o->no_paper, "Leave out the paper arenas");
   add_threads_option(app, o->threads);
-  app.add_option("--seed-base", o->seed_base,
-                 "A screen's simulation seeds from this one instead of its seed_base (a rule's fresh seeds)");
+  CLI::Option* seed_base = add_seed_option(
+      app, "--seed-base", o->seed_base,
+      "A screen's simulation seeds from this one instead of its seed_base (a rule's fresh seeds)");
   app.add_option("--json", o->json, "Write the rows, the arenas and every run as JSON");
   app.add_option("--md", o->markdown, "Write the markdown report to this file too");
   app.add_option("--svg", o->svg, "Draw the success rates per family");
-  return [o, evaluators](std::ostream& out, std::ostream& err) {
+  return [o, evaluators, seed_base](std::ostream& out, std::ostream& err) {
+    o->seed_base_given = seed_base->count() > 0;
     return run_benchmark(*o, evaluators, out, err);
   };
 }

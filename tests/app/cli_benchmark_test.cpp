@@ -125,6 +125,7 @@ TEST(Benchmark, AScreenTakesOnlySeedsOutsideTheBenchmarksRangeAndLabelsItsRows) 
   const auto refused = cli({"benchmark", "--config", (dir / "bench.toml").string(), "--seed-base", "5"});
   EXPECT_EQ(refused.code, 2);
   EXPECT_NE(refused.err.find("only a screen"), std::string::npos) << refused.err;
+  EXPECT_EQ(cli({"benchmark", "--config", (dir / "screen.toml").string(), "--seed-base", "-1"}).code, 2);
 }
 
 TEST(Benchmark, TheShippedTrainingScreenLoads) {
