@@ -150,8 +150,9 @@ Runner add_view(CLI::App& app) {
       "Print the recorded frame at or before this tick as JSON (robots' positions, LEDs, states, links)");
   app.add_flag("--census", o->census,
                "Print a census of the run as JSON: robot-ticks in each controller state, the table rows "
-               "that fired, and the trips (each stay in one exploring state): count, median ticks, the "
-               "state each ended in");
+               "that fired, the trips (each stay in one exploring state): count, median ticks, the "
+               "state each ended in, and the stalls (robots within 25 cm for 2000 ticks or more where "
+               "they were meant to move)");
   return [o](std::ostream& out, std::ostream& err) { return run_view(*o, out, err); };
 }
 
