@@ -51,6 +51,8 @@ const std::array kAdditions{
   Addition{"align_keep_view", "an aligning robot keeps both references in view", "§2.4, #10, #13", kBoth, {{{"align_keep_view", 0}}}, {}},
   Addition{"seek_hidden_reference", "a reference out of view is looked for where it was", "§2.3 #11, #13", kBoth, {{{"seek_hidden_reference", 0}}}, {"align_keep_view"}},
   Addition{"relink_recovery", "a SUB_NEST takes a RECOVERY parent's parent", "§2.3 #17", kBoth, {{{"relink_recovery", 0}}}, {}},
+  Addition{"chain_bypass", "a subgoal that sees its parent's parent skips its parent", "§2.3 #15, #16", kTa, {{{"chain_bypass", 0}}}, {}},
+  Addition{"chain_bypass_pf", "the same in path formation without task allocation", "§2.3 #15, #16", kBoth, {{{"chain_bypass_pf", 0}}}, {}},
   Addition{"chain_repair", "a chain robot whose neighbour's light is gone mends the chain", "§2.3 #18-#20", kBoth, {{{"chain_repair", 0}}}, {}},
   // task allocation
   Addition{"late_founder_rests", "a founder that hears ALLOC_DONE first rests", "§2.6 T7f", kTa, {{{"late_founder_rests", 0}}}, {}},
@@ -79,10 +81,10 @@ const std::array kAdditions{
 
 // additions under trial: registered so that the ablation can measure them, off in the default
 // (docs/detours.md)
-constexpr std::array<std::string_view, 11> kOffInDefault{
+constexpr std::array<std::string_view, 12> kOffInDefault{
     "spot_on_way", "way_after_edge",  "leaf_in_fan",      "route_to_sighting", "walk_way",
     "share_way",   "founder_retrace", "founder_in_crowd", "way_home_leg",      "anywhere_after_edge",
-    "T_leaf_allocated"};
+    "T_leaf_allocated", "chain_bypass_pf"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
 constexpr std::array kSpecDefaults{

@@ -151,7 +151,9 @@ struct Params {
   bool seek_tip = true;          ///< TA, single_child: an allocated explorer waits by a forming robot
   double tip_hover = 50;         ///< seek_tip: distance at which it waits [cm]
   bool sighting_returns = true;  ///< TA, single_child: nothing free at the sighting -> home (row #2)
-  bool chain_bypass = false;     ///< TA, single_child: rows #15-#16, a subgoal skips a redundant parent
+  bool chain_bypass = true;      ///< TA: rows #15-#16, a subgoal skips a parent whose parent it sees
+  bool chain_bypass_pf = false;  ///< rows #15-#16 in path formation without task allocation too
+  double bypass_reach = 95;      ///< chain_bypass: the parent's parent in view this near [cm]
   bool rest_recruit = true;      ///< T10: a resting robot that sees a chain's free end joins it
   double t_recruit = 50;     ///< rest_recruit: ticks the free end stays in view first (plus a draw) [ticks]
   bool recruit_call = true;  ///< T10: a subgoal unclaimed for T_starve calls resting robots (3 m)

@@ -27,7 +27,7 @@ const Blob* free_subgoal_in_view(const Percept& in) {
 }
 
 // chain_bypass [R]: a RED subgoal whose parent's parent (the RED robot the parent's light names, or
-// the goal) is in view within d_sub + 10 cm skips the parent. A RED subgoal leaves the chain once
+// the goal) is in view within bypass_reach skips the parent. A RED subgoal leaves the chain once
 // every robot that has named it as parent (its children, by their lights' tags or claims on the
 // medium) is seen or heard naming another, one of them its own parent: it was skipped
 void perceive_bypass(const Percept& in, const Params& p, PfMemory& m, const Claims& claims, PfSight& sight) {
@@ -54,7 +54,7 @@ void perceive_bypass(const Percept& in, const Params& p, PfMemory& m, const Clai
   const int grandparent = parent != nullptr && parent->color == Led::kRed ? parent->tag : kNobody;
   for (const Blob& b : in.blobs) {
     // (not where the grandparent names my parent or me as its own: a loop, not a chain)
-    if (grandparent != kNobody && b.emitter == grandparent && b.distance_cm <= p.d_sub + 10.0 &&
+    if (grandparent != kNobody && b.emitter == grandparent && b.distance_cm <= p.bypass_reach &&
         (b.color == Led::kRed || b.emitter == kGoalEmitter) && b.tag != m.parent.id && b.tag != in.id) {
       sight.grandparent = &b;
     }

@@ -135,7 +135,7 @@ Params with_bypass() {
 }
 
 // R: chain_bypass. Subgoal 3 (me) has parent 7, whose light names 5 as its parent; 5 stands 60 cm
-// from me (<= d_sub + 10 cm): 7 is redundant, and I take 5 as my parent (row 15)
+// from me (<= bypass_reach): 7 is redundant, and I take 5 as my parent (row 15)
 TEST(PfTable, Row15ASubgoalSkipsAParentWhoseParentIsWithinReach) {
   PfMemory m = bypassing_subgoal(7);
   Reading r;
@@ -144,14 +144,18 @@ TEST(PfTable, Row15ASubgoalSkipsAParentWhoseParentIsWithinReach) {
   EXPECT_EQ(fire(m, r, with_bypass()), "#15");
   EXPECT_EQ(m.state, PfState::kSubgoal);
   EXPECT_EQ(m.parent.id, 5);
-  // beyond d_sub + 10 cm, or without the option, the chain stays as it is
+  // beyond bypass_reach, or without the option, the chain stays as it is
   PfMemory far = bypassing_subgoal(7);
   Reading out;
   out.add(Led::kRed, 7, 0, 70, 5);
   out.add(Led::kRed, 5, 60, 85, 2);
-  EXPECT_EQ(fire(far, out, with_bypass()), "");
+  Params near = with_bypass();
+  near.bypass_reach = 80;  // d_sub + 10 cm: only where the chain folds back
+  EXPECT_EQ(fire(far, out, near), "");
   PfMemory off = bypassing_subgoal(7);
-  EXPECT_EQ(fire(off, r, Params{}), "");
+  Params without;
+  without.chain_bypass = false;
+  EXPECT_EQ(fire(off, r, without), "");
   // 5 names 7 as its parent: 7 and 5 form a loop, and following it would flip for ever
   PfMemory loop = bypassing_subgoal(7);
   Reading cycle;
@@ -159,6 +163,35 @@ TEST(PfTable, Row15ASubgoalSkipsAParentWhoseParentIsWithinReach) {
   cycle.add(Led::kRed, 5, 60, 60, 7);
   cycle.add(Led::kRed, 11, 180, 70, kMe);  // my child: I am not left out (row 16)
   EXPECT_EQ(fire(loop, cycle, with_bypass()), "");
+}
+
+// R: chain_bypass is task allocation's (allocated robots and scouts alike); chain_bypass_pf the same
+// for path formation's subgoals. The parent's parent 90 cm off: within the default reach (95 cm)
+TEST(PfTable, Row15InEachModeByItsOwnSwitch) {
+  Reading r;
+  r.add(Led::kRed, 7, 0, 70, 5);
+  r.add(Led::kRed, 5, 40, 90, 2);
+  const Params defaults;
+  ASSERT_TRUE(defaults.chain_bypass);
+  ASSERT_FALSE(defaults.chain_bypass_pf);
+  ASSERT_EQ(defaults.bypass_reach, 95);
+  PfMemory scout = bypassing_subgoal(7);
+  scout.role = PfRole::kScout;
+  EXPECT_EQ(fire(scout, r, defaults), "#15");
+  PfMemory swarm = bypassing_subgoal(7);
+  swarm.role = PfRole::kSwarm;
+  EXPECT_EQ(fire(swarm, r, defaults), "");  // path formation keeps every link by default
+  Params pf = defaults;
+  pf.chain_bypass_pf = true;
+  EXPECT_EQ(fire(swarm, r, pf), "#15");
+  EXPECT_EQ(swarm.parent.id, 5);
+  // the reach is the camera's distance to the parent's parent: 100 cm is beyond 95
+  Reading edge;
+  edge.add(Led::kRed, 7, 0, 70, 5);
+  edge.add(Led::kRed, 5, 40, 100, 2);
+  PfMemory beyond = bypassing_subgoal(7);
+  beyond.role = PfRole::kSwarm;
+  EXPECT_EQ(fire(beyond, edge, pf), "");
 }
 
 // R: chain_bypass. I (3) am RED with parent 5; my child 8 now names 5 as its parent and nobody
@@ -564,6 +597,7 @@ TEST(PfTable, Row21WithTLeafAllocatedAnAllocatedLeafInAFanLeaves) {
   Params p;
   p.t_leaf = 100;
   p.t_leaf_allocated = 3;
+  p.chain_bypass = false;  // the parent's parent stands within bypass_reach: row #15 would take it
   PfMemory tip_memory = in_state(PfState::kSubgoal);
   tip_memory.role = PfRole::kAllocated;
   tip_memory.parent = tracked(5, {0.7, 0.0});

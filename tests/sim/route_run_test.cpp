@@ -86,6 +86,7 @@ TEST(WalkWay, RobotsOfTaskAllocationWalkTheWayTheyCameBackToTheChain) {
   off.lead_way = false;          // as measured: no robot walks the founder's way either
   off.away_decay = 1.0;          // ... and every trip under the full away field
   off.resume_search = false;     // ... explored from the nest
+  off.chain_bypass = false;      // ... every link kept (with it seed 7 forms without the rule)
   ASSERT_FALSE(off.walk_way);
   Params on = off;
   on.walk_way = true;

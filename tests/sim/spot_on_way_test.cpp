@@ -74,6 +74,7 @@ TEST(SpotOnWay, OnlyAWayThatWentRoundAnObstacleGivesTheSpot) {
   Params on;
   test::hasty_along_walls(on);  // as measured
   on.lead_way = false;          // as measured: the robots then come by the field, not along the founder's way
+  on.chain_bypass = false;      // ... and every link they lay is kept
   on.spot_on_way = true;
   Params edge = on;
   edge.way_after_edge = true;

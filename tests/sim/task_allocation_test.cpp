@@ -735,7 +735,8 @@ TEST(TaRun, OneChainNoSideBranches) {
   Params p = load_params(test::source_path("genomes/paper-single.toml"));
   test::hasty_along_walls(p);  // as measured
   p.lead_way = false;
-  p.away_decay = 1.0;  // and every trip under the full away field, as measured
+  p.away_decay = 1.0;      // and every trip under the full away field, as measured
+  p.chain_bypass = false;  // ... and every link kept: a skipped link goes home and may stand RED again
   ASSERT_TRUE(p.single_child && p.ta_backoff_spot && p.depart_gap > 0);
   Params fan = p;
   fan.single_child = false;
@@ -845,7 +846,9 @@ TEST(Determinism, GoldenHashTaskAllocationShortChain) {
   // the back-off's T_trap/4 asks for trap_progress/4, not all of it (the run spot_patience gave), -> 1030
   // lead_way (the founder tells its way at the nest, the protocol waiting every other tick; the
   // allocated robots walk its wandering way out), -> 1885
-  constexpr std::uint64_t kExpected = 0xb7b833417e8b8254ULL;  // complete: 1885 ticks, 20 allocated
+  // chain_bypass in the default with task allocation, reach 95 cm (a link whose parent's parent is in
+  // view skips its parent, which goes home and out again to the tip), -> 1820
+  constexpr std::uint64_t kExpected = 0xebc3a65641bb1ad4ULL;  // complete: 1820 ticks, 20 allocated
   Params p;
   p.delta_open = 5;  // SPEC §2.7's default, so that some of the 20 robots rest
   const Metrics m = evaluate(p, with_max_ticks(short_chain(), 20000), Mode::kTaskAllocation, 1);
