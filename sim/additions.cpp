@@ -45,7 +45,8 @@ const std::array kAdditions{
   Addition{"spot_crumb_tol", "the spot is a crumb of the robot's own way out", "§2.3 #5", kBoth, {{{"spot_crumb_tol", 0}}}, {"backoff_far_spot"}},
   Addition{"trail_nestward", "falling back from the spot, the trail starts nestward", "§2.3 #5", kBoth, {{{"trail_nestward", 0}}}, {"backoff_far_spot", "T_trap"}},
   Addition{"spot_on_way", "the spot is where the robot's own way out first came that near", "§2.3 #5, #6b", kBoth, {{{"spot_on_way", 0}}}, {"backoff_far_spot"}},
-  Addition{"anywhere_after_edge", "a way that went round an obstacle: a subgoal anywhere on it", "§2.3 #5, #6b", kBoth, {{{"anywhere_after_edge", 0}}}, {"subgoal_nestward", "T_trap"}},
+  Addition{"anywhere_after_edge", "a way that went round an obstacle: a subgoal anywhere on it", "§2.3 #5, #6b", kTa, {{{"anywhere_after_edge", 0}}}, {"subgoal_nestward", "T_trap"}},
+  Addition{"anywhere_after_edge_pf", "the same in path formation without task allocation", "§2.3 #5, #6b", kBoth, {{{"anywhere_after_edge_pf", 0}}}, {"subgoal_nestward", "T_trap"}},
   Addition{"way_after_edge", "the spot on the way only after an obstacle's edge on this trip", "§2.3 #5, #6b", kBoth, {{{"way_after_edge", 0}}}, {"spot_on_way", "T_trap"}},
   // aligning and the chain's links
   Addition{"align_keep_view", "an aligning robot keeps both references in view", "§2.4, #10, #13", kBoth, {{{"align_keep_view", 0}}}, {}},
@@ -83,7 +84,7 @@ const std::array kAdditions{
 // (docs/detours.md)
 constexpr std::array<std::string_view, 12> kOffInDefault{
     "spot_on_way", "way_after_edge",  "leaf_in_fan",      "route_to_sighting", "walk_way",
-    "share_way",   "founder_retrace", "founder_in_crowd", "way_home_leg",      "anywhere_after_edge",
+    "share_way",   "founder_retrace", "founder_in_crowd", "way_home_leg",      "anywhere_after_edge_pf",
     "T_leaf_allocated", "chain_bypass_pf"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)

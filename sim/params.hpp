@@ -94,11 +94,12 @@ struct Params {
   bool skip_blocked_crumbs = true;  ///< a robot going home passes over a crumb it cannot reach in T_trap
   // forming a subgoal (SPEC §2.3 rows #5-#8)
   bool backoff_trail = true;  ///< a forming robot backs off along its own way from the nest (else the field)
-  bool retarget_nearer = true;       ///< row #5r: a forming robot re-targets to a RED robot nearer the nest
-  bool subgoal_nestward = true;      ///< rows #5, #6b: a subgoal forms only nearer the nest than its target
-  double trail_slack = 45;           ///< subgoal_nestward, on its trail: how much farther it may stop [cm]
-  bool anywhere_after_edge = false;  ///< subgoal_nestward, on a trail that followed an edge: no bound
-  bool backoff_spot = false;         ///< forming: back off to the spot d_sub from the target toward the nest
+  bool retarget_nearer = true;      ///< row #5r: a forming robot re-targets to a RED robot nearer the nest
+  bool subgoal_nestward = true;     ///< rows #5, #6b: a subgoal forms only nearer the nest than its target
+  double trail_slack = 45;          ///< subgoal_nestward, on its trail: how much farther it may stop [cm]
+  bool anywhere_after_edge = true;  ///< TA: subgoal_nestward, on a trail that followed an edge: no bound
+  bool anywhere_after_edge_pf = false;  ///< the same in path formation without task allocation
+  bool backoff_spot = false;     ///< forming: back off to the spot d_sub from the target toward the nest
   bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
   double spot_crumb_tol = 15;    ///< the spot: a crumb of its way out this near d_sub + 5 cm [cm] (0: none)
   bool trail_nestward = true;    ///< from the spot back to its trail: nearer the nest than the target

@@ -25,8 +25,10 @@ bool nestward_of_target(const PfContext& c, Vec2 at) {
     const Blob* t = blob_of(c.in, c.m.target.id);
     if (t != nullptr && t->distance_cm < c.sight.other_chain_cm) return true;
   }
-  // R (anywhere_after_edge): a way that went round an obstacle may lead away from the nest first
-  if (c.p.anywhere_after_edge && c.on_trail && c.went_round) return true;
+  // R (anywhere_after_edge, task allocation; anywhere_after_edge_pf): a way that went round an
+  // obstacle may lead away from the nest first
+  const bool anywhere = c.m.role == PfRole::kSwarm ? c.p.anywhere_after_edge_pf : c.p.anywhere_after_edge;
+  if (anywhere && c.on_trail && c.went_round) return true;
   // nearer the nest than the target; retracing its own way home (which may wind round an
   // obstacle's end) a robot may stop up to trail_slack farther [R]: more, and the chain knots
   const double slack = c.on_trail ? c.p.trail_slack * kCm : 0.0;

@@ -311,24 +311,39 @@ TEST(PfTable, Row5OnTheTrailStopsAtMostTrailSlackFartherFromTheNest) {
   EXPECT_EQ(fire(m, sees(180), anywhere, true), "#5");
 }
 
-// R: anywhere_after_edge (off by default; docs/detours.md). Retracing a way that followed an
-// obstacle's edge on this trip, a robot may stop as a subgoal however far from the nest; a way that
-// never followed one keeps trail_slack, and off its trail the target must be farther as before.
-TEST(PfTable, Row5AfterAnEdgeStopsAnywhereOnTheWayItCame) {
+// R: anywhere_after_edge (on for task allocation; anywhere_after_edge_pf, off, for path formation;
+// docs/detours.md). Retracing a way that followed an obstacle's edge on this trip, a robot may stop
+// as a subgoal however far from the nest; a way that never followed one keeps trail_slack, and off
+// its trail the target must be farther as before.
+TEST(PfTable, Row5AfterAnEdgeStopsAnywhereOnTheWayItCameInEachModeByItsOwnSwitch) {
   const Vec2 behind{-0.75, 0.0};  // the target 75 cm nearer the nest than the robot
   Reading r;
   r.add(Led::kRed, 7, 180, 75);
-  Params on;
-  on.anywhere_after_edge = true;
-  PfMemory m = forming(behind);
-  EXPECT_EQ(fire(m, r, Params{}, true, true), "");  // off: 75 cm > trail_slack
-  m = forming(behind);
-  EXPECT_EQ(fire(m, r, on, true, false), "");  // a way that never followed an edge
-  m = forming(behind);
-  EXPECT_EQ(fire(m, r, on, false, true), "");  // not on its way
-  m = forming(behind);
-  EXPECT_EQ(fire(m, r, on, true, true), "#5");
+  const Params defaults;
+  ASSERT_TRUE(defaults.anywhere_after_edge);
+  ASSERT_FALSE(defaults.anywhere_after_edge_pf);
+  const auto forming_as = [&](PfRole role) {
+    PfMemory m = forming(behind);
+    m.role = role;
+    return m;
+  };
+  PfMemory m = forming_as(PfRole::kSwarm);
+  EXPECT_EQ(fire(m, r, defaults, true, true), "");  // path formation: 75 cm > trail_slack
+  m = forming_as(PfRole::kAllocated);
+  EXPECT_EQ(fire(m, r, defaults, true, false), "");  // a way that never followed an edge
+  m = forming_as(PfRole::kAllocated);
+  EXPECT_EQ(fire(m, r, defaults, false, true), "");  // not on its way
+  m = forming_as(PfRole::kAllocated);
+  EXPECT_EQ(fire(m, r, defaults, true, true), "#5");
   EXPECT_EQ(m.parent.id, 7);
+  Params off = defaults;
+  off.anywhere_after_edge = false;
+  m = forming_as(PfRole::kAllocated);
+  EXPECT_EQ(fire(m, r, off, true, true), "");
+  Params pf = defaults;
+  pf.anywhere_after_edge_pf = true;
+  m = forming_as(PfRole::kSwarm);
+  EXPECT_EQ(fire(m, r, pf, true, true), "#5");
 }
 
 // R: link_outward (off by default; docs/detours.md). Retracing its own way home, a robot may stop

@@ -81,12 +81,13 @@ TEST(RouteToSighting, RobotsTrappedOnTheirWayBackToTheChainRetraceTheWayTheyCame
 // against the wall until travel_cap ends their trips); the other seeds form within 1 200 ticks of
 // off, six of them walking a kept way for 500-4 000 robot-ticks.
 TEST(WalkWay, RobotsOfTaskAllocationWalkTheWayTheyCameBackToTheChain) {
-  Params off;                    // the default: walk_way = false
-  test::hasty_along_walls(off);  // as measured
-  off.lead_way = false;          // as measured: no robot walks the founder's way either
-  off.away_decay = 1.0;          // ... and every trip under the full away field
-  off.resume_search = false;     // ... explored from the nest
-  off.chain_bypass = false;      // ... every link kept (with it seed 7 forms without the rule)
+  Params off;                       // the default: walk_way = false
+  test::hasty_along_walls(off);     // as measured
+  off.lead_way = false;             // as measured: no robot walks the founder's way either
+  off.away_decay = 1.0;             // ... and every trip under the full away field
+  off.resume_search = false;        // ... explored from the nest
+  off.chain_bypass = false;         // ... every link kept (with it seed 7 forms without the rule)
+  off.anywhere_after_edge = false;  // ... and subgoals only near the target's distance from the nest
   ASSERT_FALSE(off.walk_way);
   Params on = off;
   on.walk_way = true;
