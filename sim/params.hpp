@@ -107,7 +107,8 @@ struct Params {
   bool way_after_edge = false;   ///< spot_on_way: only a way that followed an obstacle's edge
   bool tip_by_links = false;     ///< row #5r: re-target to the target's child (by links), not by distance
   bool retarget_tip = true;      ///< row #5r: re-target only to a RED no RED in view names as its parent
-  bool link_outward = false;     ///< rows #5, #6b on its trail: stop if the target is the nearest chain light
+  bool link_outward = false;     ///< rows #5, #6b (task allocation): stop on its trail by the nearest light
+  bool link_outward_pf = false;  ///< the same in path formation without task allocation
   double form_retries = 3;       ///< rows #7, #8b: a robot losing its target goes home, this often
   double t_leaf = 1500;          ///< row #21: a RED leaf nobody names this long goes home [ticks]
   bool leaf_in_fan = false;      ///< row #21: T_leaf counts only while another branch is in view

@@ -20,14 +20,15 @@ bool nestward_of_target(const PfContext& c, Vec2 at) {
   if (c.p.spot_on_way && c.m.has_way_spot && c.m.way_spot_for == c.m.target.id &&
       dist(at, c.m.way_spot) <= kWaySpotReach)
     return true;
-  // R (link_outward): on its own way from the nest, wherever the new link extends the chain
-  if (c.p.link_outward && c.on_trail && c.m.target.visible) {
+  // R (link_outward, task allocation; link_outward_pf): on its own way from the nest, wherever the
+  // new link extends the chain
+  if (by_mode(c.m.role, c.p.link_outward_pf, c.p.link_outward) && c.on_trail && c.m.target.visible) {
     const Blob* t = blob_of(c.in, c.m.target.id);
     if (t != nullptr && t->distance_cm < c.sight.other_chain_cm) return true;
   }
   // R (anywhere_after_edge, task allocation; anywhere_after_edge_pf): a way that went round an
   // obstacle may lead away from the nest first
-  const bool anywhere = c.m.role == PfRole::kSwarm ? c.p.anywhere_after_edge_pf : c.p.anywhere_after_edge;
+  const bool anywhere = by_mode(c.m.role, c.p.anywhere_after_edge_pf, c.p.anywhere_after_edge);
   if (anywhere && c.on_trail && c.went_round) return true;
   // nearer the nest than the target; retracing its own way home (which may wind round an
   // obstacle's end) a robot may stop up to trail_slack farther [R]: more, and the chain knots

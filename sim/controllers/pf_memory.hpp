@@ -39,6 +39,10 @@ Led led_of(PfState s);
 /// T9, T10, T11), for which the task-allocation options apply (single_child, ta_backoff_spot, ...).
 enum class PfRole : std::uint8_t { kSwarm, kScout, kAllocated };
 
+/// A switch split by mode [R]: `pf` for path formation's robots, `ta` for task allocation's (its
+/// scouts, allocated robots and late arrivals).
+constexpr bool by_mode(PfRole role, bool pf, bool ta) { return role == PfRole::kSwarm ? pf : ta; }
+
 /// EXPLORING's legs: a trip may first travel (following the founder out, or to the last sighting)
 /// before it explores; row #2 ends it.
 enum class ExploreLeg : std::uint8_t {

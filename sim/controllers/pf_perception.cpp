@@ -226,7 +226,7 @@ void pf_perceive(const Percept& in, const Params& p, Vec2 nest, PfMemory& m, PfS
   track(m.child, in, p, true);
   // chain_bypass [R]: every RED subgoal of its mode; the robots naming it are those the lights and the
   // medium tell (an allocated one's claims, gathered above, are the same)
-  const bool bypass = m.role == PfRole::kSwarm ? p.chain_bypass_pf : p.chain_bypass;
+  const bool bypass = by_mode(m.role, p.chain_bypass_pf, p.chain_bypass);
   if (bypass && m.state == PfState::kSubgoal)
     perceive_bypass(in, p, m, claims_links(p, m) ? claims : gather_claims(in), sight);
   if (p.relink_recovery && m.state == PfState::kSubNest) perceive_heir(in, m, sight);

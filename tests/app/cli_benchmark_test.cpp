@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <unistd.h>
 
@@ -135,6 +136,32 @@ TEST(Benchmark, TheShippedTrainingScreenLoads) {
   EXPECT_EQ(c.arenas(), 21u);
   EXPECT_EQ(c.paper.size(), 1u);  // env8
   for (const BenchmarkFamily& f : c.families) {
+    for (const std::uint64_t s : f.seeds) EXPECT_FALSE(sim::arenas::is_benchmark_seed(s));
+  }
+}
+
+// Version 2 holds version 1's arenas and more of each family, and no benchmark seed.
+TEST(Benchmark, TheSecondTrainingScreenHoldsTheFirstsArenasAndMore) {
+  const std::string dir = std::string(SWARMPATH_SOURCE_DIR) + "/configs/benchmarks/";
+  const BenchmarkConfig v1 = load_benchmark_config(dir + "training.toml");
+  const BenchmarkConfig v2 = load_benchmark_config(dir + "training-2.toml");
+  EXPECT_TRUE(v2.screen);
+  EXPECT_EQ(v2.version, 2);
+  EXPECT_EQ(v2.arenas(), 42u);
+  EXPECT_EQ(v2.paper.size(), 1u);  // env8
+  const auto arenas_of = [](const BenchmarkConfig& c, const std::string& row) {
+    std::set<std::uint64_t> seeds;
+    for (const BenchmarkFamily& f : c.families) {
+      if (f.label == row) seeds.insert(f.seeds.begin(), f.seeds.end());
+    }
+    return seeds;
+  };
+  for (const BenchmarkFamily& f : v1.families) {
+    const std::set<std::uint64_t> wider = arenas_of(v2, f.label);
+    EXPECT_GT(wider.size(), f.seeds.size()) << f.label;
+    for (const std::uint64_t s : f.seeds) EXPECT_TRUE(wider.count(s)) << f.label << " " << s;
+  }
+  for (const BenchmarkFamily& f : v2.families) {
     for (const std::uint64_t s : f.seeds) EXPECT_FALSE(sim::arenas::is_benchmark_seed(s));
   }
 }

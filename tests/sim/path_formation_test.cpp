@@ -346,18 +346,31 @@ TEST(PfTable, Row5AfterAnEdgeStopsAnywhereOnTheWayItCameInEachModeByItsOwnSwitch
   EXPECT_EQ(fire(m, r, pf, true, true), "#5");
 }
 
-// R: link_outward (off by default; docs/detours.md). Retracing its own way home, a robot may stop
-// as a subgoal however far from the nest, provided its target is the nearest chain light in view:
-// round a doorway off the nest-goal line the way home first leads away from the nest.
+// R: link_outward (task allocation's robots) and link_outward_pf (path formation's), both off by
+// default (docs/detours.md). Retracing its own way home, a robot may stop as a subgoal however far
+// from the nest, provided its target is the nearest chain light in view: round a doorway off the
+// nest-goal line the way home first leads away from the nest.
 TEST(PfTable, Row5LinkOutwardStopsOnTheTrailWhereTheTargetIsTheNearestChainLight) {
   const Vec2 behind{-0.75, 0.0};  // the target 75 cm nearer the nest than the robot
   Reading r;
   r.add(Led::kRed, 7, 180, 75);
-  Params off;
+  const Params off;
+  ASSERT_FALSE(off.link_outward);
+  ASSERT_FALSE(off.link_outward_pf);
   PfMemory m = forming(behind);
   EXPECT_EQ(fire(m, r, off, true), "");  // 75 cm > trail_slack
-  Params on;
-  on.link_outward = true;
+  Params ta = off;
+  ta.link_outward = true;  // task allocation's switch leaves path formation's robots as they were
+  m = forming(behind);
+  EXPECT_EQ(fire(m, r, ta, true), "");
+  m = forming(behind);
+  m.role = PfRole::kAllocated;
+  EXPECT_EQ(fire(m, r, ta, true), "#5");
+  Params on = off;
+  on.link_outward_pf = true;
+  m = forming(behind);
+  m.role = PfRole::kAllocated;  // and path formation's leaves task allocation's robots
+  EXPECT_EQ(fire(m, r, on, true), "");
   m = forming(behind);
   EXPECT_EQ(fire(m, r, on, true), "#5");
   EXPECT_EQ(m.parent.id, 7);
