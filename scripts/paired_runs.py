@@ -6,10 +6,14 @@
 
 Runs are paired by (scenario, robots, seed, mode). For each file: success per arena family (the
 scenario's name without its trailing -N), runs formed, the success difference CAND - BASE in points
-with a 95 % interval (normal approximation over the paired runs), the difference in ticks to form
-where both formed, and, where BASE holds task-allocation runs, the cases (scenario x robots) in which
-task allocation's mean time to form is below path formation's (a case path formation never forms
-counts as faster; a case task allocation never forms does not), the paper's "formed faster with TA".
+with a 95 % interval (normal approximation over the paired runs), the same difference with its
+interval over the arenas (each arena's mean difference over its runs, a Student-t interval over the
+arenas: runs on one arena share its walls, so an effect that rests on a few arenas shows in this
+interval and not in the runs'), the difference in ticks to form where both formed, and, where BASE
+holds task-allocation runs, the cases (scenario x robots) in which task allocation's mean time to
+form is below path formation's (a case path formation never forms counts as faster; a case task
+allocation never forms does not), the paper's "formed faster with TA". `benchmark --json` outputs
+are read as the table of runs they hold.
 A candidate without task-allocation runs is compared with BASE's (a switch of path formation's
 leaves them bit for bit as they are). To run two params files side by side instead of comparing
 outputs already written, `swarmpath evaluate --params A.toml --against B.toml` does both.
@@ -32,6 +36,8 @@ def load(path):
             data = json.load(f)
     except (OSError, json.JSONDecodeError) as e:
         fail(f"{path}: {e}")
+    if isinstance(data, dict) and isinstance(data.get("table"), dict) and "benchmark" in data:
+        data = data["table"]  # `benchmark --json`: its runs are those of the table beside it
     if not isinstance(data, dict) or not isinstance(data.get("runs"), list):
         fail(f"{path}: not a `swarmpath table --json` output (no 'runs' list)")
     runs = {}
@@ -59,6 +65,32 @@ def interval(values):
         return m, 0.0
     sd = math.sqrt(sum((x - m) ** 2 for x in values) / (n - 1))
     return m, 1.96 * sd / math.sqrt(n)
+
+
+def t95(df):
+    """The two-sided 95 % quantile of Student's t with df degrees of freedom (a table up to 10, then
+    the Cornish-Fisher expansion, within 0.001 of the exact value there)."""
+    if df < 1:
+        return float("nan")
+    if df <= 10:
+        return (12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228)[df - 1]
+    z = 1.959964
+    return (z + (z ** 3 + z) / (4 * df) + (5 * z ** 5 + 16 * z ** 3 + 3 * z) / (96 * df ** 2)
+            + (3 * z ** 7 + 19 * z ** 5 + 17 * z ** 3 - 15 * z) / (384 * df ** 3))
+
+
+def by_arena(diffs):
+    """Mean and 95 % half-width over arenas of each arena's mean difference: diffs maps an arena to
+    its runs' differences."""
+    means = [sum(v) / len(v) for v in diffs.values()]
+    n = len(means)
+    if n == 0:
+        return float("nan"), float("nan")
+    m = sum(means) / n
+    if n == 1:
+        return m, float("nan")
+    sd = math.sqrt(sum((x - m) ** 2 for x in means) / (n - 1))
+    return m, t95(n - 1) * sd / math.sqrt(n)
 
 
 def case_times(runs, mode):
@@ -90,6 +122,10 @@ def compare(base, cand, mode):
         f[0] += bool(cand[k]["success"])
         f[1] += 1
     diff = interval([float(cand[k]["success"]) - float(base[k]["success"]) for k in keys])
+    arenas = {}
+    for k in keys:
+        arenas.setdefault(k[0], []).append(float(cand[k]["success"]) - float(base[k]["success"]))
+    arena_diff = by_arena(arenas)
     both = [cand[k]["ticks_to_form"] - base[k]["ticks_to_form"] for k in keys
             if cand[k]["success"] and base[k]["success"]]
     out = {
@@ -98,6 +134,8 @@ def compare(base, cand, mode):
         "base_formed": sum(bool(base[k]["success"]) for k in keys),
         "families": fams,
         "success_points": (100 * diff[0], 100 * diff[1]),
+        "arenas": len(arenas),
+        "arena_points": (100 * arena_diff[0], 100 * arena_diff[1]),
         "ticks_both_formed": interval(both) + (len(both),),
     }
     ta_source = cand if any(k[3] == "ta" for k in cand) else base
@@ -121,18 +159,20 @@ def main(argv=None):
         if r["runs"] == 0:
             fail(f"{path}: no runs in common with {a.base}")
     fams = sorted({f for _, r in rows for f in r["families"]})
-    print("| file | " + " | ".join(fams) + " | formed | vs base (points, 95 %) | ticks where both formed "
+    print("| file | " + " | ".join(fams) + " | formed | vs base (points, 95 %) | by arena (points, 95 %, arenas) | ticks where both formed "
           "(95 %, runs) | TA faster (cases) |")
-    print("|" + "---|" * (len(fams) + 5))
+    print("|" + "---|" * (len(fams) + 6))
     for path, r in rows:
         cells = [f"{r['families'][f][0]}/{r['families'][f][1]}" if f in r["families"] else "-" for f in fams]
         m, h = r["success_points"]
         tm, th, tn = r["ticks_both_formed"]
         ticks = f"{tm:+.0f} [{tm - th:.0f}, {tm + th:.0f}] ({tn})" if tn else "-"
         fast = f"{r['ta_faster'][0]} of {r['ta_faster'][1]}" if "ta_faster" in r else "-"
+        am, ah = r["arena_points"]
+        arena = f"{am:+.1f} [{am - ah:.1f}, {am + ah:.1f}] ({r['arenas']})" if r["arenas"] > 1 else "-"
         print(f"| {path} | " + " | ".join(cells) +
               f" | {r['formed']}/{r['runs']} (base {r['base_formed']}) | {m:+.1f} [{m - h:.1f}, {m + h:.1f}] "
-              f"| {ticks} | {fast} |")
+              f"| {arena} | {ticks} | {fast} |")
 
 
 if __name__ == "__main__":

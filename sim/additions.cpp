@@ -83,10 +83,10 @@ const std::array kAdditions{
 
 // additions under trial: registered so that the ablation can measure them, off in the default
 // (docs/detours.md)
-constexpr std::array<std::string_view, 13> kOffInDefault{
+constexpr std::array<std::string_view, 11> kOffInDefault{
     "spot_on_way", "way_after_edge",  "leaf_in_fan",      "route_to_sighting", "walk_way",
-    "share_way",   "founder_retrace", "founder_in_crowd", "way_home_leg",      "anywhere_after_edge_pf",
-    "T_leaf_allocated", "chain_bypass_pf", "link_outward_pf"};
+    "share_way",   "founder_retrace", "founder_in_crowd", "way_home_leg",      "T_leaf_allocated",
+    "link_outward_pf"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
 constexpr std::array kSpecDefaults{

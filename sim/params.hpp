@@ -94,11 +94,11 @@ struct Params {
   bool skip_blocked_crumbs = true;  ///< a robot going home passes over a crumb it cannot reach in T_trap
   // forming a subgoal (SPEC §2.3 rows #5-#8)
   bool backoff_trail = true;  ///< a forming robot backs off along its own way from the nest (else the field)
-  bool retarget_nearer = true;      ///< row #5r: a forming robot re-targets to a RED robot nearer the nest
-  bool subgoal_nestward = true;     ///< rows #5, #6b: a subgoal forms only nearer the nest than its target
-  double trail_slack = 45;          ///< subgoal_nestward, on its trail: how much farther it may stop [cm]
-  bool anywhere_after_edge = true;  ///< TA: subgoal_nestward, on a trail that followed an edge: no bound
-  bool anywhere_after_edge_pf = false;  ///< the same in path formation without task allocation
+  bool retarget_nearer = true;         ///< row #5r: a forming robot re-targets to a RED robot nearer the nest
+  bool subgoal_nestward = true;        ///< rows #5, #6b: a subgoal forms only nearer the nest than its target
+  double trail_slack = 45;             ///< subgoal_nestward, on its trail: how much farther it may stop [cm]
+  bool anywhere_after_edge = true;     ///< TA: subgoal_nestward, on a trail that followed an edge: no bound
+  bool anywhere_after_edge_pf = true;  ///< the same in path formation without task allocation
   bool backoff_spot = false;     ///< forming: back off to the spot d_sub from the target toward the nest
   bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
   double spot_crumb_tol = 15;    ///< the spot: a crumb of its way out this near d_sub + 5 cm [cm] (0: none)
@@ -154,7 +154,7 @@ struct Params {
   double tip_hover = 50;         ///< seek_tip: distance at which it waits [cm]
   bool sighting_returns = true;  ///< TA, single_child: nothing free at the sighting -> home (row #2)
   bool chain_bypass = true;      ///< TA: rows #15-#16, a subgoal skips a parent whose parent it sees
-  bool chain_bypass_pf = false;  ///< rows #15-#16 in path formation without task allocation too
+  bool chain_bypass_pf = true;   ///< rows #15-#16 in path formation without task allocation too
   double bypass_reach = 95;      ///< chain_bypass: the parent's parent in view this near [cm]
   bool rest_recruit = true;      ///< T10: a resting robot that sees a chain's free end joins it
   double t_recruit = 50;     ///< rest_recruit: ticks the free end stays in view first (plus a draw) [ticks]

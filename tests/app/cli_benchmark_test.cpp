@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The generalisation benchmark: its file is read strictly (arena seeds only from the benchmarks'
 // range, the generator version it was drawn with; a screen's only from outside it), the shipped
-// benchmark and training screen load, the report's
+// benchmark, the training screens and the validation screen load, the report's
 // figures are the runs' means, and `swarmpath benchmark` reports per family and overall, with and
 // without TA, beside the paper arenas, the same at any thread count, and says whether one params
 // file beats another.
@@ -164,6 +164,33 @@ TEST(Benchmark, TheSecondTrainingScreenHoldsTheFirstsArenasAndMore) {
   for (const BenchmarkFamily& f : v2.families) {
     for (const std::uint64_t s : f.seeds) EXPECT_FALSE(sim::arenas::is_benchmark_seed(s));
   }
+}
+
+TEST(Benchmark, TheValidationScreenDrawsTheBenchmarksFamiliesFromOtherSeeds) {
+  const std::string dir = std::string(SWARMPATH_SOURCE_DIR) + "/configs/benchmarks/";
+  const BenchmarkConfig bench = load_benchmark_config(dir + "generalisation.toml");
+  const BenchmarkConfig val = load_benchmark_config(dir + "validation.toml");
+  const BenchmarkConfig train = load_benchmark_config(dir + "training-2.toml");
+  EXPECT_TRUE(val.screen);
+  EXPECT_TRUE(val.paper.empty());
+  EXPECT_EQ(val.robots, bench.robots);
+  EXPECT_EQ(val.max_ticks, bench.max_ticks);
+  // every family of the benchmark, drawn as the benchmark draws it (its defaults), and no other
+  ASSERT_EQ(val.families.size(), bench.families.size());
+  for (std::size_t k = 0; k < bench.families.size(); ++k) {
+    EXPECT_EQ(val.families[k].label, bench.families[k].label);
+    EXPECT_TRUE(val.families[k].spec == bench.families[k].spec) << val.families[k].label;
+    EXPECT_GE(val.families[k].seeds.size(), bench.families[k].seeds.size()) << val.families[k].label;
+  }
+  std::set<std::uint64_t> training_seeds;
+  for (const BenchmarkFamily& f : train.families) training_seeds.insert(f.seeds.begin(), f.seeds.end());
+  for (const BenchmarkFamily& f : val.families) {
+    for (const std::uint64_t s : f.seeds) {
+      EXPECT_FALSE(sim::arenas::is_benchmark_seed(s)) << f.label << " " << s;
+      EXPECT_FALSE(training_seeds.count(s)) << f.label << " " << s;  // no arena a training screen holds
+    }
+  }
+  EXPECT_EQ(val.arenas(), 62u);
 }
 
 sim::Metrics run_metrics(bool success, std::int64_t ticks, double path) {

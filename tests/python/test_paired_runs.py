@@ -94,3 +94,24 @@ def test_a_run_without_its_fields_and_files_without_common_runs_are_bad_input(tm
     assert code == 2 and "lacking.json: runs[0] lacks mode, success, ticks_to_form" in err, err
     code, out, err = paired(good, other)
     assert code == 2 and "no runs in common" in err and out == "", (out, err)
+
+
+def test_an_effect_on_one_arena_of_three_is_significant_by_runs_and_not_by_arenas(tmp_path):
+    # rooms-1 forms 4 more runs with the candidate, rooms-2 and rooms-3 the same
+    base, cand = [], []
+    for arena in ("rooms-1", "rooms-2", "rooms-3"):
+        for seed in (1, 2, 3, 4):
+            base.append(run(arena, seed, "pf", arena != "rooms-1", 1000))
+            cand.append(run(arena, seed, "pf", True, 1000))
+    # the benchmark's shape: its runs under "table"
+    b = tmp_path / "base.json"
+    b.write_text(json.dumps({"benchmark": {"name": "validation"}, "table": {"runs": base}}))
+    c = write(tmp_path / "cand.json", cand)
+    code, out, err = paired(b, c)
+    assert code == 0, err
+    header = [h.strip() for h in out.splitlines()[0].strip("|").split("|")]
+    col = dict(zip(header, row(out, str(c))))
+    # runs: 4 of 12 differ by +1: mean 33.3, sd 49.2, half-width 1.96 * 49.2 / sqrt(12) = 27.9
+    assert col["vs base (points, 95 %)"] == "+33.3 [5.5, 61.2]"
+    # arenas: means 1, 0, 0: sd 57.7, t(2) = 4.303, half-width 4.303 * 57.7 / sqrt(3) = 143.4
+    assert col["by arena (points, 95 %, arenas)"] == "+33.3 [-110.1, 176.8] (3)"

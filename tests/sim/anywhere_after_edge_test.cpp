@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// anywhere_after_edge [R] (on for task allocation; anywhere_after_edge_pf, off, for path formation;
+// anywhere_after_edge [R] (on for task allocation; anywhere_after_edge_pf, on, for path formation;
 // docs/detours.md, "The way back leads away from the nest"): a forming robot retracing a way that
 // followed an obstacle's edge on this trip may stop as a subgoal anywhere on it, not only within
 // trail_slack of its target's distance from the nest. tests/data/mixed_4.toml (the training arena
@@ -17,18 +17,18 @@ namespace {
 TEST(AnywhereAfterEdge, AChainGrowsBackAlongAWayThatLeadsAwayFromTheNest) {
   const Params defaults;
   ASSERT_TRUE(defaults.anywhere_after_edge);
-  ASSERT_FALSE(defaults.anywhere_after_edge_pf);
+  ASSERT_TRUE(defaults.anywhere_after_edge_pf);
   const Scenario s = load_scenario(test::source_path("tests/data/mixed_4.toml"));
   // task allocation: the default forms, without the switch it does not
   Params ta_off = defaults;
   ta_off.anywhere_after_edge = false;
   EXPECT_TRUE(evaluate(defaults, s, Mode::kTaskAllocation, 21).success);
   EXPECT_FALSE(evaluate(ta_off, s, Mode::kTaskAllocation, 21).success);
-  // path formation: its own switch, off in the default
-  Params pf_on = defaults;
-  pf_on.anywhere_after_edge_pf = true;
-  EXPECT_FALSE(evaluate(defaults, s, Mode::kPathFormation, 21).success);
-  EXPECT_TRUE(evaluate(pf_on, s, Mode::kPathFormation, 21).success);
+  // path formation: its own switch, on in the default too
+  Params pf_off = defaults;
+  pf_off.anywhere_after_edge_pf = false;
+  EXPECT_TRUE(evaluate(defaults, s, Mode::kPathFormation, 21).success);
+  EXPECT_FALSE(evaluate(pf_off, s, Mode::kPathFormation, 21).success);
 }
 
 }  // namespace

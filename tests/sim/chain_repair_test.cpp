@@ -147,10 +147,12 @@ TEST(ChainRepair, ABrokenChainInASmallArenaFormsItsPathOnlyWithTheRule) {
   Params spec_lost;
   spec_lost.form_retries = 0;
   spec_lost.chain_repair = false;
-  spec_lost.resume_search = false;  // as measured: every trip explores from the nest
+  spec_lost.resume_search = false;           // as measured: every trip explores from the nest
+  test::pf_links_by_trail_slack(spec_lost);  // as measured
   Params repairing_spec_lost = repairing();
   repairing_spec_lost.form_retries = 0;
   repairing_spec_lost.resume_search = false;
+  test::pf_links_by_trail_slack(repairing_spec_lost);
   for (const std::uint64_t seed : {4, 11}) {
     const Metrics off = evaluate(spec_lost, s, Mode::kPathFormation, seed);
     const Metrics on = evaluate(repairing_spec_lost, s, Mode::kPathFormation, seed);

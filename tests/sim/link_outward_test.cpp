@@ -15,8 +15,9 @@ namespace swarmpath::sim {
 namespace {
 
 TEST(LinkOutward, PathFormationsChainGrowsBackAlongTheWayTheRobotsCame) {
-  const Params off;
+  Params off;
   ASSERT_FALSE(off.link_outward_pf);
+  test::pf_links_by_trail_slack(off);  // as measured: anywhere_after_edge_pf forms this run too
   Params on = off;
   on.link_outward_pf = true;
   // seed 21 forms at tick 20 209 with the switch; without it not in 36 000 (the training screen)

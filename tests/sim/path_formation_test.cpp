@@ -173,17 +173,22 @@ TEST(PfTable, Row15InEachModeByItsOwnSwitch) {
   r.add(Led::kRed, 5, 40, 90, 2);
   const Params defaults;
   ASSERT_TRUE(defaults.chain_bypass);
-  ASSERT_FALSE(defaults.chain_bypass_pf);
+  ASSERT_TRUE(defaults.chain_bypass_pf);
   ASSERT_EQ(defaults.bypass_reach, 95);
   PfMemory scout = bypassing_subgoal(7);
   scout.role = PfRole::kScout;
   EXPECT_EQ(fire(scout, r, defaults), "#15");
+  Params ta_off = defaults;  // task allocation's switch off: path formation's subgoal still bypasses
+  ta_off.chain_bypass = false;
+  scout = bypassing_subgoal(7);
+  scout.role = PfRole::kScout;
+  EXPECT_EQ(fire(scout, r, ta_off), "");
   PfMemory swarm = bypassing_subgoal(7);
   swarm.role = PfRole::kSwarm;
-  EXPECT_EQ(fire(swarm, r, defaults), "");  // path formation keeps every link by default
-  Params pf = defaults;
-  pf.chain_bypass_pf = true;
-  EXPECT_EQ(fire(swarm, r, pf), "#15");
+  Params pf_off = defaults;  // path formation's switch off: it keeps every link
+  pf_off.chain_bypass_pf = false;
+  EXPECT_EQ(fire(swarm, r, pf_off), "");
+  EXPECT_EQ(fire(swarm, r, ta_off), "#15");
   EXPECT_EQ(swarm.parent.id, 5);
   // the reach is the camera's distance to the parent's parent: 100 cm is beyond 95
   Reading edge;
@@ -191,7 +196,7 @@ TEST(PfTable, Row15InEachModeByItsOwnSwitch) {
   edge.add(Led::kRed, 5, 40, 100, 2);
   PfMemory beyond = bypassing_subgoal(7);
   beyond.role = PfRole::kSwarm;
-  EXPECT_EQ(fire(beyond, edge, pf), "");
+  EXPECT_EQ(fire(beyond, edge, defaults), "");
 }
 
 // R: chain_bypass. I (3) am RED with parent 5; my child 8 now names 5 as its parent and nobody
@@ -311,7 +316,7 @@ TEST(PfTable, Row5OnTheTrailStopsAtMostTrailSlackFartherFromTheNest) {
   EXPECT_EQ(fire(m, sees(180), anywhere, true), "#5");
 }
 
-// R: anywhere_after_edge (on for task allocation; anywhere_after_edge_pf, off, for path formation;
+// R: anywhere_after_edge (on for task allocation; anywhere_after_edge_pf, on, for path formation;
 // docs/detours.md). Retracing a way that followed an obstacle's edge on this trip, a robot may stop
 // as a subgoal however far from the nest; a way that never followed one keeps trail_slack, and off
 // its trail the target must be farther as before.
@@ -321,14 +326,18 @@ TEST(PfTable, Row5AfterAnEdgeStopsAnywhereOnTheWayItCameInEachModeByItsOwnSwitch
   r.add(Led::kRed, 7, 180, 75);
   const Params defaults;
   ASSERT_TRUE(defaults.anywhere_after_edge);
-  ASSERT_FALSE(defaults.anywhere_after_edge_pf);
+  ASSERT_TRUE(defaults.anywhere_after_edge_pf);
   const auto forming_as = [&](PfRole role) {
     PfMemory m = forming(behind);
     m.role = role;
     return m;
   };
+  Params pf_off = defaults;
+  pf_off.anywhere_after_edge_pf = false;
   PfMemory m = forming_as(PfRole::kSwarm);
-  EXPECT_EQ(fire(m, r, defaults, true, true), "");  // path formation: 75 cm > trail_slack
+  EXPECT_EQ(fire(m, r, pf_off, true, true), "");  // path formation without it: 75 cm > trail_slack
+  m = forming_as(PfRole::kAllocated);
+  EXPECT_EQ(fire(m, r, pf_off, true, true), "#5");  // task allocation's robot: its own switch
   m = forming_as(PfRole::kAllocated);
   EXPECT_EQ(fire(m, r, defaults, true, false), "");  // a way that never followed an edge
   m = forming_as(PfRole::kAllocated);
@@ -340,10 +349,10 @@ TEST(PfTable, Row5AfterAnEdgeStopsAnywhereOnTheWayItCameInEachModeByItsOwnSwitch
   off.anywhere_after_edge = false;
   m = forming_as(PfRole::kAllocated);
   EXPECT_EQ(fire(m, r, off, true, true), "");
-  Params pf = defaults;
-  pf.anywhere_after_edge_pf = true;
   m = forming_as(PfRole::kSwarm);
-  EXPECT_EQ(fire(m, r, pf, true, true), "#5");
+  EXPECT_EQ(fire(m, r, off, true, true), "#5");  // path formation's robot: its own switch, on
+  m = forming_as(PfRole::kSwarm);
+  EXPECT_EQ(fire(m, r, defaults, true, false), "");  // a way that never followed an edge
 }
 
 // R: link_outward (task allocation's robots) and link_outward_pf (path formation's), both off by
@@ -597,6 +606,7 @@ TEST(PfTable, Row21WithLeafInFanOnlyALeafThatSeesAnotherBranchLeaves) {
   Params p;
   p.t_leaf = 3;
   p.leaf_in_fan = true;
+  p.chain_bypass_pf = false;  // the parent's parent in view at 95 cm: row #15 would skip the parent
   PfMemory tip_memory = in_state(PfState::kSubgoal);
   tip_memory.parent = tracked(5, {0.7, 0.0});
   PfMemory m = tip_memory;

@@ -52,6 +52,7 @@ TEST(RetargetTip, FormingRobotsKeepToTheTipsAndThePathFormsRoundTheWalls) {
   on.away_decay = 1.0;       // as measured: every trip under the full away field (with it on: 7 of 8)
   on.resume_search = false;  // ... explored from the nest
   on.share_after = 15000;    // ... and sightings told from tick 15 000
+  test::pf_links_by_trail_slack(on);  // ... and links laid by trail_slack alone
   Params off = on;
   off.retarget_tip = false;
   int formed_off = 0, formed_on = 0, sooner = 0, both = 0, lost_off = 0, lost_on = 0;

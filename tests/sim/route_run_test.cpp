@@ -55,11 +55,8 @@ Travel run_far_door(const Params& p, Mode mode, std::uint64_t seed) {
 // travel_cap ends their trips; with it they turn along the way they came once the field traps them.
 // Task allocation: 7 -> 8 formed (seed 7).
 TEST(RouteToSighting, RobotsTrappedOnTheirWayBackToTheChainRetraceTheWayTheyCame) {
-  Params off;                    // the default: route_to_sighting = false
-  test::hasty_along_walls(off);  // as measured
-  off.retarget_tip = false;      // as measured: with it far_door forms these seeds without the rule
-  off.away_decay = 1.0;          // ... and every trip under the full away field
-  off.resume_search = false;     // ... explored from the nest
+  Params off;  // the default: route_to_sighting = false
+  test::far_door_as_measured(off);
   Params on = off;
   on.route_to_sighting = true;
   for (const std::uint64_t seed : {1, 5, 6, 7}) {
@@ -123,8 +120,9 @@ TEST(ShareWay, ToldRobotsWalkTheWayTheTellerCameAndTravelFarLess) {
   Params off;
   test::hasty_along_walls(off);  // as measured
   off.share_after = 0;
-  off.away_decay = 1.0;       // as measured: every trip under the full away field
-  off.resume_search = false;  // ... explored from the nest
+  off.away_decay = 1.0;                // as measured: every trip under the full away field
+  off.resume_search = false;           // ... explored from the nest
+  test::pf_links_by_trail_slack(off);  // ... and links laid by trail_slack alone
   ASSERT_FALSE(off.share_way);
   Params on = off;
   on.share_way = true;

@@ -142,6 +142,7 @@ TEST(SightingShare, ListeningFromTheFirstTellingTickLeavesTheRunsAsTheyWere) {
   p.retarget_tip = false;   // the code whose hashes these are re-targeted by the distance to the nest alone
   p.away_decay = 1.0;       // ... and explored under the full away field on every trip
   p.resume_search = false;  // ... from the nest
+  test::pf_links_by_trail_slack(p);  // ... and laid links by trail_slack alone, keeping every one
   const Scenario s = with_robots(
       with_max_ticks(load_scenario(test::source_path("tests/data/small_serpentine.toml")), 8000), 40);
   FaultModel lossy;
@@ -229,8 +230,9 @@ TEST(SightingShare, TellingFromShareAfterLeavesAQuickSearchAsItWasAndHelpsASlowO
 TEST(SightingShare, TellingAfterFruitlessTripsComesWhenRobotsHaveSearchedInVain) {
   Params off;
   off.share_sighting = 0;
-  off.away_decay = 1.0;       // as measured: every trip under the full away field
-  off.resume_search = false;  // ... explored from the nest
+  off.away_decay = 1.0;                // as measured: every trip under the full away field
+  off.resume_search = false;           // ... explored from the nest
+  test::pf_links_by_trail_slack(off);  // ... and links laid by trail_slack alone
   Params tick = off;
   tick.share_sighting = 300;  // share_after 12 500, the default
   Params trips = tick;

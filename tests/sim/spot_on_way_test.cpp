@@ -42,11 +42,8 @@ Outcome run_in(const char* arena, const Params& p, Mode mode, std::uint64_t seed
 // to a spot, backoff_far_spot: a few links at spots on the way). Task allocation 8 -> 7 since
 // blocked_trip_ends, stop_at_view_edge and spot_patience were removed (6 -> 8 before: seeds 1, 7)
 TEST(SpotOnWay, TheChainGrowsTheWayTheRobotsCameToAFarDoorway) {
-  Params off;                    // the default: spot_on_way = false
-  test::hasty_along_walls(off);  // as measured
-  off.retarget_tip = false;      // as measured: with it far_door forms these seeds without the rule
-  off.away_decay = 1.0;          // ... and every trip under the full away field
-  off.resume_search = false;     // ... explored from the nest
+  Params off;  // the default: spot_on_way = false
+  test::far_door_as_measured(off);
   Params on = off;
   on.spot_on_way = true;
 

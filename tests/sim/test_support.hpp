@@ -49,6 +49,26 @@ inline sim::Trail trip_through_the_doorway() {
 /// along walls"): an edge following that made no progress turned back after 5 T_trap.
 inline void hasty_along_walls(sim::Params& p) { p.dead_end_traps = 5; }
 
+/// Path formation's links as measured before `anywhere_after_edge_pf` and `chain_bypass_pf` joined
+/// the default (docs/detours.md, "The validation screen"): a forming robot stops within trail_slack
+/// on any way it retraces, and a subgoal keeps its parent however near the parent's parent is.
+inline void pf_links_by_trail_slack(sim::Params& p) {
+  p.anywhere_after_edge_pf = false;
+  p.chain_bypass_pf = false;
+}
+
+/// The far_door runs of the rules for robots trapped on their way (route_to_sighting, spot_on_way) as
+/// they were measured: hasty along walls, row #5r by the distance to the nest alone (with retarget_tip
+/// far_door forms those seeds without either rule), every trip under the full away field and from
+/// the nest, links laid by trail_slack alone.
+inline void far_door_as_measured(sim::Params& p) {
+  hasty_along_walls(p);
+  p.retarget_tip = false;
+  p.away_decay = 1.0;
+  p.resume_search = false;
+  pf_links_by_trail_slack(p);
+}
+
 inline sim::Scenario small_arena(const std::string& extra = "", int robots = 10) {
   return sim::parse_scenario(small_arena_toml(extra, robots), "small.toml");
 }

@@ -12,11 +12,13 @@
 namespace swarmpath::sim {
 namespace {
 
-// Seeds 21, 23 and 24 form their path with the default and not with dead_end_traps 5, the default
-// until 2026-11-29.
+// Seeds 21, 23 and 24 form their path with dead_end_traps 20 (the default) and not with 5, the default
+// until 2026-11-29, both with path formation's links as they were then (with anywhere_after_edge_pf
+// and chain_bypass_pf, in the default since 2026-11-30, none of the three forms).
 TEST(WallPatience, ARoomBehindAFarDoorwayIsReachedOnlyWithPatienceAlongItsWall) {
-  const Params patient;
+  Params patient;
   ASSERT_EQ(patient.dead_end_traps, 20);
+  test::pf_links_by_trail_slack(patient);  // as measured
   Params hasty = patient;
   hasty.dead_end_traps = 5;
   const Scenario s = load_scenario(test::source_path("tests/data/wallfar_11.toml"));
