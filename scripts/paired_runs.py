@@ -159,8 +159,8 @@ def main(argv=None):
         if r["runs"] == 0:
             fail(f"{path}: no runs in common with {a.base}")
     fams = sorted({f for _, r in rows for f in r["families"]})
-    print("| file | " + " | ".join(fams) + " | formed | vs base (points, 95 %) | by arena (points, 95 %, arenas) | ticks where both formed "
-          "(95 %, runs) | TA faster (cases) |")
+    print("| file | " + " | ".join(fams) + " | formed | vs base (points, 95 %) | by arena (points, 95 %, "
+          "arenas) | ticks where both formed (95 %, runs) | TA faster (cases) |")
     print("|" + "---|" * (len(fams) + 6))
     for path, r in rows:
         cells = [f"{r['families'][f][0]}/{r['families'][f][1]}" if f in r["families"] else "-" for f in fams]
