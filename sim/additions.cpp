@@ -44,7 +44,8 @@ const std::array kAdditions{
   Addition{"backoff_far_spot", "the goal found from its far side: back off to the spot", "§2.3 #5", kBoth, {{{"backoff_far_spot", 0}}}, {}},
   Addition{"spot_crumb_tol", "the spot is a crumb of the robot's own way out", "§2.3 #5", kBoth, {{{"spot_crumb_tol", 0}}}, {"backoff_far_spot"}},
   Addition{"trail_nestward", "falling back from the spot, the trail starts nestward", "§2.3 #5", kBoth, {{{"trail_nestward", 0}}}, {"backoff_far_spot", "T_trap"}},
-  Addition{"spot_on_way", "the spot is where the robot's own way out first came that near", "§2.3 #5, #6b", kBoth, {{{"spot_on_way", 0}}}, {"backoff_far_spot"}},
+  Addition{"spot_on_way", "the spot is where the robot's own way out first came that near", "§2.3 #5, #6b", kTa, {{{"spot_on_way", 0}}}, {"ta_backoff_spot"}},
+  Addition{"spot_on_way_pf", "the same in path formation without task allocation", "§2.3 #5, #6b", kBoth, {{{"spot_on_way_pf", 0}}}, {"backoff_far_spot"}},
   Addition{"link_outward_pf", "path formation: on its way out, a subgoal where the target is the nearest chain light", "§2.3 #5, #6b", kBoth, {{{"link_outward_pf", 0}}}, {"subgoal_nestward"}},
   Addition{"anywhere_after_edge", "a way that went round an obstacle: a subgoal anywhere on it", "§2.3 #5, #6b", kTa, {{{"anywhere_after_edge", 0}}}, {"subgoal_nestward", "T_trap"}},
   Addition{"anywhere_after_edge_pf", "the same in path formation without task allocation", "§2.3 #5, #6b", kBoth, {{{"anywhere_after_edge_pf", 0}}}, {"subgoal_nestward", "T_trap"}},
@@ -83,10 +84,9 @@ const std::array kAdditions{
 
 // additions under trial: registered so that the ablation can measure them, off in the default
 // (docs/detours.md)
-constexpr std::array<std::string_view, 11> kOffInDefault{
-    "spot_on_way", "way_after_edge",  "leaf_in_fan",      "route_to_sighting", "walk_way",
-    "share_way",   "founder_retrace", "founder_in_crowd", "way_home_leg",      "T_leaf_allocated",
-    "link_outward_pf"};
+constexpr std::array<std::string_view, 10> kOffInDefault{
+    "spot_on_way_pf", "leaf_in_fan",      "route_to_sighting", "walk_way",         "share_way",
+    "founder_retrace", "founder_in_crowd", "way_home_leg",      "T_leaf_allocated", "link_outward_pf"};
 
 // SPEC §7's defaults where the code's differ (docs/CHOICES.md: the speed and the allocation)
 constexpr std::array kSpecDefaults{

@@ -103,8 +103,9 @@ struct Params {
   bool backoff_far_spot = true;  ///< forming: back off to the spot when the goal was found from its far side
   double spot_crumb_tol = 15;    ///< the spot: a crumb of its way out this near d_sub + 5 cm [cm] (0: none)
   bool trail_nestward = true;    ///< from the spot back to its trail: nearer the nest than the target
-  bool spot_on_way = false;      ///< the spot: where its way out first came that near the target
-  bool way_after_edge = false;   ///< spot_on_way: only a way that followed an obstacle's edge
+  bool spot_on_way = true;       ///< TA: the spot: where its way out first came that near the target
+  bool spot_on_way_pf = false;   ///< the same in path formation without task allocation
+  bool way_after_edge = true;    ///< spot_on_way: only a way that followed an obstacle's edge
   bool tip_by_links = false;     ///< row #5r: re-target to the target's child (by links), not by distance
   bool retarget_tip = true;      ///< row #5r: re-target only to a RED no RED in view names as its parent
   bool link_outward = false;     ///< rows #5, #6b (task allocation): stop on its trail by the nearest light

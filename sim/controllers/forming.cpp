@@ -15,10 +15,11 @@ namespace {
 
 bool nestward_of_target(const PfContext& c, Vec2 at) {
   if (!c.p.subgoal_nestward) return true;  // SPEC's rows #5, #6b: anywhere d_sub from the target
-  // R (spot_on_way): at its spot on the way it came, nearer the nest along that way
+  // R (spot_on_way, task allocation; spot_on_way_pf): at its spot on the way it came, nearer the
+  // nest along that way
   constexpr double kWaySpotReach = 0.25;  // [m] one crumb's spacing
-  if (c.p.spot_on_way && c.m.has_way_spot && c.m.way_spot_for == c.m.target.id &&
-      dist(at, c.m.way_spot) <= kWaySpotReach)
+  if (by_mode(c.m.role, c.p.spot_on_way_pf, c.p.spot_on_way) && c.m.has_way_spot &&
+      c.m.way_spot_for == c.m.target.id && dist(at, c.m.way_spot) <= kWaySpotReach)
     return true;
   // R (link_outward, task allocation; link_outward_pf): on its own way from the nest, wherever the
   // new link extends the chain
@@ -138,10 +139,12 @@ Vec2 backoff_spot_at(const Params& p, const RobotMemory& mem, Vec2 tgt) {
 Command to_spot(const Percept& in, const Params& p, RobotMemory& mem, const PfSight& sight) {
   PfMemory& m = mem.pf;
   const Vec2 tgt = m.target.last_seen;
-  // R (spot_on_way): a way with no crumb for the straight-line spot came round an obstacle's end: the
-  // spot is where it first came that near the target, chosen once per target (the trail home consumes
-  // crumbs); falling back, it retraces that way from the crumb nearest it
-  if (p.spot_on_way && m.way_spot_for != m.target.id) {
+  // R (spot_on_way, task allocation; spot_on_way_pf): a way with no crumb for the straight-line spot
+  // came round an obstacle's end: the spot is where it first came that near the target, chosen once
+  // per target (the trail home consumes crumbs); falling back, it retraces that way from the crumb
+  // nearest it
+  const bool spot_on_way = by_mode(m.role, p.spot_on_way_pf, p.spot_on_way);
+  if (spot_on_way && m.way_spot_for != m.target.id) {
     m.way_spot_for = m.target.id;
     Vec2 straight;  // a crumb of its way the straight-line rule accepts: that spot stands
     const bool straight_ok =
@@ -152,7 +155,7 @@ Command to_spot(const Percept& in, const Params& p, RobotMemory& mem, const PfSi
     // its edge); in an open room the way is the robot's own wandering
     if (p.way_after_edge) m.has_way_spot = m.has_way_spot && mem.trail.went_round();
   }
-  const bool on_way = p.spot_on_way && m.has_way_spot;
+  const bool on_way = spot_on_way && m.has_way_spot;
   const Vec2 spot_at = on_way ? m.way_spot : backoff_spot_at(p, mem, tgt);
   const double trail_within = p.trail_nestward && !on_way ? dist(tgt, mem.nest) : Trail::kEverywhere;
   const Vec2 f =

@@ -30,6 +30,20 @@ fs::path temp_dir() { return cli_support::temp_dir("cli_benchmark_test"); }
 
 std::string read(const fs::path& p) { return cli_support::read_file(p); }
 
+// the arena seeds of a benchmark file's families (of the row `label` alone where one is named)
+std::set<std::uint64_t> arena_seeds(const BenchmarkConfig& c, const std::string& label = "") {
+  std::set<std::uint64_t> seeds;
+  for (const BenchmarkFamily& f : c.families) {
+    if (label.empty() || f.label == label) seeds.insert(f.seeds.begin(), f.seeds.end());
+  }
+  return seeds;
+}
+
+// a screen's arenas: none drawn with a benchmark's seed
+void expect_no_benchmark_seed(const BenchmarkConfig& c) {
+  for (const std::uint64_t s : arena_seeds(c)) EXPECT_FALSE(sim::arenas::is_benchmark_seed(s)) << s;
+}
+
 // two families of small arenas, 8 robots, short runs
 const std::string kTiny =
     "name = \"tiny\"\nversion = 3\ngenerator_version = 1\nrobots = [8]\nseeds = 1\nmax_ticks = 1500\n"
@@ -135,9 +149,7 @@ TEST(Benchmark, TheShippedTrainingScreenLoads) {
   EXPECT_TRUE(c.screen);
   EXPECT_EQ(c.arenas(), 21u);
   EXPECT_EQ(c.paper.size(), 1u);  // env8
-  for (const BenchmarkFamily& f : c.families) {
-    for (const std::uint64_t s : f.seeds) EXPECT_FALSE(sim::arenas::is_benchmark_seed(s));
-  }
+  expect_no_benchmark_seed(c);
 }
 
 // Version 2 holds version 1's arenas and more of each family, and no benchmark seed.
@@ -149,21 +161,12 @@ TEST(Benchmark, TheSecondTrainingScreenHoldsTheFirstsArenasAndMore) {
   EXPECT_EQ(v2.version, 2);
   EXPECT_EQ(v2.arenas(), 42u);
   EXPECT_EQ(v2.paper.size(), 1u);  // env8
-  const auto arenas_of = [](const BenchmarkConfig& c, const std::string& row) {
-    std::set<std::uint64_t> seeds;
-    for (const BenchmarkFamily& f : c.families) {
-      if (f.label == row) seeds.insert(f.seeds.begin(), f.seeds.end());
-    }
-    return seeds;
-  };
   for (const BenchmarkFamily& f : v1.families) {
-    const std::set<std::uint64_t> wider = arenas_of(v2, f.label);
+    const std::set<std::uint64_t> wider = arena_seeds(v2, f.label);
     EXPECT_GT(wider.size(), f.seeds.size()) << f.label;
     for (const std::uint64_t s : f.seeds) EXPECT_TRUE(wider.count(s)) << f.label << " " << s;
   }
-  for (const BenchmarkFamily& f : v2.families) {
-    for (const std::uint64_t s : f.seeds) EXPECT_FALSE(sim::arenas::is_benchmark_seed(s));
-  }
+  expect_no_benchmark_seed(v2);
 }
 
 TEST(Benchmark, TheValidationScreenDrawsTheBenchmarksFamiliesFromOtherSeeds) {
@@ -182,14 +185,10 @@ TEST(Benchmark, TheValidationScreenDrawsTheBenchmarksFamiliesFromOtherSeeds) {
     EXPECT_TRUE(val.families[k].spec == bench.families[k].spec) << val.families[k].label;
     EXPECT_GE(val.families[k].seeds.size(), bench.families[k].seeds.size()) << val.families[k].label;
   }
-  std::set<std::uint64_t> training_seeds;
-  for (const BenchmarkFamily& f : train.families) training_seeds.insert(f.seeds.begin(), f.seeds.end());
-  for (const BenchmarkFamily& f : val.families) {
-    for (const std::uint64_t s : f.seeds) {
-      EXPECT_FALSE(sim::arenas::is_benchmark_seed(s)) << f.label << " " << s;
-      EXPECT_FALSE(training_seeds.count(s)) << f.label << " " << s;  // no arena a training screen holds
-    }
-  }
+  expect_no_benchmark_seed(val);
+  const std::set<std::uint64_t> training_seeds = arena_seeds(train);
+  for (const std::uint64_t s : arena_seeds(val))
+    EXPECT_FALSE(training_seeds.count(s)) << s;  // no training arena
   EXPECT_EQ(val.arenas(), 62u);
 }
 

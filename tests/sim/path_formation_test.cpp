@@ -392,9 +392,10 @@ TEST(PfTable, Row5LinkOutwardStopsOnTheTrailWhereTheTargetIsTheNearestChainLight
   EXPECT_EQ(fire(m, beside, on, true), "");
 }
 
-// R: spot_on_way (off by default; docs/detours.md). A robot backing off to the spot on the way it
-// came (round a wall's end, farther from the nest in a straight line than its target) stops as the
-// subgoal there, d_sub from its target, where the straight-line rule would keep it forming.
+// R: spot_on_way (task allocation's robots) and spot_on_way_pf (path formation's; off by default;
+// docs/detours.md). A robot backing off to the spot on the way it came (round a wall's end, farther
+// from the nest in a straight line than its target) stops as the subgoal there, d_sub from its
+// target, where the straight-line rule would keep it forming.
 TEST(PfTable, Row5SpotOnWayStopsAtTheSpotOnTheWayItCame) {
   const Vec2 behind{-0.75, 0.0};  // the target 75 cm nearer the nest than the robot
   Reading r;
@@ -407,10 +408,22 @@ TEST(PfTable, Row5SpotOnWayStopsAtTheSpotOnTheWayItCame) {
     return m;
   };
   Params off;
+  off.spot_on_way = false;
+  off.spot_on_way_pf = false;
   PfMemory m = at_spot({0.05, 0.0});
   EXPECT_EQ(fire(m, r, off), "");  // the straight line: farther from the nest than its target
-  Params on;
-  on.spot_on_way = true;
+  Params ta = off;
+  ta.spot_on_way = true;  // task allocation's switch leaves path formation's robots as they were
+  m = at_spot({0.05, 0.0});
+  EXPECT_EQ(fire(m, r, ta), "");
+  m = at_spot({0.05, 0.0});
+  m.role = PfRole::kAllocated;
+  EXPECT_EQ(fire(m, r, ta), "#5");
+  Params on = off;
+  on.spot_on_way_pf = true;
+  m = at_spot({0.05, 0.0});
+  m.role = PfRole::kAllocated;  // and path formation's leaves task allocation's robots
+  EXPECT_EQ(fire(m, r, on), "");
   m = at_spot({0.05, 0.0});
   EXPECT_EQ(fire(m, r, on), "#5");
   EXPECT_EQ(m.parent.id, 7);

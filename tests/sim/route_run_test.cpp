@@ -85,6 +85,7 @@ TEST(WalkWay, RobotsOfTaskAllocationWalkTheWayTheyCameBackToTheChain) {
   off.resume_search = false;        // ... explored from the nest
   off.chain_bypass = false;         // ... every link kept (with it seed 7 forms without the rule)
   off.anywhere_after_edge = false;  // ... and subgoals only near the target's distance from the nest
+  test::ta_spot_straight(off);      // ... backing off to the straight-line spot
   ASSERT_FALSE(off.walk_way);
   Params on = off;
   on.walk_way = true;

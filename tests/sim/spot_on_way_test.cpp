@@ -37,15 +37,16 @@ Outcome run_in(const char* arena, const Params& p, Mode mode, std::uint64_t seed
   return o;
 }
 
-// far_door, 50 robots, seeds 1-8, runs that formed their path, default -> spot_on_way: path formation
+// far_door, 50 robots, seeds 1-8, runs that formed their path, default -> spot_on_way_pf: path formation
 // 4 -> 7 (seeds 5-8 only with it; only forming robots that found the goal from its far side back off
 // to a spot, backoff_far_spot: a few links at spots on the way). Task allocation 8 -> 7 since
 // blocked_trip_ends, stop_at_view_edge and spot_patience were removed (6 -> 8 before: seeds 1, 7)
 TEST(SpotOnWay, TheChainGrowsTheWayTheRobotsCameToAFarDoorway) {
-  Params off;  // the default: spot_on_way = false
+  Params off;  // the default: spot_on_way_pf = false
   test::far_door_as_measured(off);
+  off.way_after_edge = false;  // as measured: every way gives its spot
   Params on = off;
-  on.spot_on_way = true;
+  on.spot_on_way_pf = true;
 
   const struct {
     Mode mode;
@@ -73,6 +74,7 @@ TEST(SpotOnWay, OnlyAWayThatWentRoundAnObstacleGivesTheSpot) {
   on.lead_way = false;          // as measured: the robots then come by the field, not along the founder's way
   on.chain_bypass = false;      // ... and every link they lay is kept
   on.spot_on_way = true;
+  on.way_after_edge = false;
   Params edge = on;
   edge.way_after_edge = true;
   for (const std::uint64_t seed : {1, 3, 6}) {

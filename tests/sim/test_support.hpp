@@ -57,6 +57,14 @@ inline void pf_links_by_trail_slack(sim::Params& p) {
   p.chain_bypass_pf = false;
 }
 
+/// Task allocation's spot as measured before `spot_on_way` and `way_after_edge` joined the default
+/// (docs/detours.md, "Rule B"): a forming robot backs off to the straight-line spot (a crumb of its
+/// way near it, else the point toward the nest), whatever way it came.
+inline void ta_spot_straight(sim::Params& p) {
+  p.spot_on_way = false;
+  p.way_after_edge = false;
+}
+
 /// The far_door runs of the rules for robots trapped on their way (route_to_sighting, spot_on_way) as
 /// they were measured: hasty along walls, row #5r by the distance to the nest alone (with retarget_tip
 /// far_door forms those seeds without either rule), every trip under the full away field and from
